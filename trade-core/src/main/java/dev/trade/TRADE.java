@@ -1,0 +1,104 @@
+package dev.trade;
+
+import java.lang.annotation.Annotation;
+import java.util.Collection;
+
+/**
+ * The JVM's default {@link TRADEContainer}, as static methods: the API TRADE users write against.
+ *
+ * <p>The default container is created on first use, from the configuration found by
+ * {@link TRADEContainer.Builder#loadConfiguration()}, and closed by a JVM shutdown hook. Every
+ * method is safe to call from any thread.
+ *
+ * <pre>{@code
+ * TRADE.registerAllServices(new RobotArm(), "MyRobot");
+ * for (TRADEServiceInfo s : TRADE.getAvailableServices(new TRADEServiceConstraints().inGroups("MyRobot"))) {
+ *   if (s.serviceString.equals("openGripper(int)")) {
+ *     s.call(void.class, 3);
+ *   }
+ * }
+ * }</pre>
+ */
+public final class TRADE {
+  private static final Object LOCK = new Object();
+  private static volatile TRADEContainer defaultContainer;
+
+  private TRADE() {}
+
+  /**
+   * The default container, created now if this is the first use.
+   *
+   * @throws IllegalArgumentException if the configuration is invalid (the message names the key);
+   *     the next call tries again
+   */
+  public static TRADEContainer getDefaultContainer() {
+    TRADEContainer c = defaultContainer;
+    if (c == null) {
+      synchronized (LOCK) {
+        c = defaultContainer;
+        if (c == null) {
+          c = TRADEContainer.builder().loadConfiguration().build();
+          TRADEContainer created = c;
+          Runtime.getRuntime().addShutdownHook(
+              new Thread(created::close, "trade-default-container-shutdown"));
+          defaultContainer = c;
+        }
+      }
+    }
+    return c;
+  }
+
+  static TRADEContainer defaultContainer() {
+    return getDefaultContainer();
+  }
+
+  /** See {@link TRADEContainer#registerAllServices(Object, Collection)}. */
+  public static Collection<TRADEServiceInfo> registerAllServices(Object provider, Collection<String> groups)
+      throws TRADEException {
+    return getDefaultContainer().registerAllServices(provider, groups);
+  }
+
+  /** See {@link TRADEContainer#registerAllServices(Object, String...)}. */
+  public static Collection<TRADEServiceInfo> registerAllServices(Object provider, String... groups)
+      throws TRADEException {
+    return getDefaultContainer().registerAllServices(provider, groups);
+  }
+
+  /** See {@link TRADEContainer#register(Object, String)}. */
+  public static Collection<TRADEServiceInfo> register(Object provider, String group) throws TRADEException {
+    return getDefaultContainer().register(provider, group);
+  }
+
+  /** See {@link TRADEContainer#register(Object, Collection)}. */
+  public static Collection<TRADEServiceInfo> register(Object provider, Collection<String> groups)
+      throws TRADEException {
+    return getDefaultContainer().register(provider, groups);
+  }
+
+  /** See {@link TRADEContainer#deregister(Object)}. */
+  public static void deregister(Object provider) throws TRADEException {
+    getDefaultContainer().deregister(provider);
+  }
+
+  /** See {@link TRADEContainer#getAvailableService(TRADEServiceConstraints)}. */
+  public static TRADEServiceInfo getAvailableService(TRADEServiceConstraints constraints)
+      throws TRADEException {
+    return getDefaultContainer().getAvailableService(constraints);
+  }
+
+  /** See {@link TRADEContainer#getAvailableServices()}. */
+  public static Collection<TRADEServiceInfo> getAvailableServices() {
+    return getDefaultContainer().getAvailableServices();
+  }
+
+  /** See {@link TRADEContainer#getAvailableServices(TRADEServiceConstraints)}. */
+  public static Collection<TRADEServiceInfo> getAvailableServices(TRADEServiceConstraints constraints) {
+    return getDefaultContainer().getAvailableServices(constraints);
+  }
+
+  /** See {@link TRADEContainer#getAvailableServices(Class, TRADEServiceConstraints)}. */
+  public static Collection<TRADEServiceInfo> getAvailableServices(
+      Class<? extends Annotation> annotation, TRADEServiceConstraints constraints) {
+    return getDefaultContainer().getAvailableServices(annotation, constraints);
+  }
+}

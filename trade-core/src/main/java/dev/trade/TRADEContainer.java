@@ -1,0 +1,256 @@
+package dev.trade;
+
+import dev.trade.internal.config.Settings;
+import dev.trade.internal.container.ContainerCore;
+import dev.trade.internal.registry.Entry;
+import dev.trade.internal.registry.LocalService;
+import dev.trade.internal.registry.Query;
+import dev.trade.internal.registry.ServiceDescriptor;
+import java.lang.annotation.Annotation;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Collection;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Objects;
+import java.util.Properties;
+import java.util.Set;
+
+/**
+ * A TRADE container: it holds registered services, knows the services of every container of its
+ * system, finds them by constraints and calls them.
+ *
+ * <p>Most programs use the JVM's default container through the static {@link TRADE} facade. Build
+ * containers explicitly to run several in one JVM (tests, bridges):
+ *
+ * <pre>{@code
+ * try (TRADEContainer c = TRADEContainer.builder().name("arm").build()) {
+ *   c.registerAllServices(new RobotArm(), "MyRobot");
+ *   c.getAvailableService(new TRADEServiceConstraints().name("openGripper")).call(void.class, 3);
+ * }
+ * }</pre>
+ *
+ * <p>Settings are fixed when the container is built. This class is safe for concurrent use.
+ */
+public final class TRADEContainer implements AutoCloseable {
+  private final ContainerCore core;
+
+  private TRADEContainer(Settings settings) {
+    this.core = new ContainerCore(settings, null);
+  }
+
+  /** A builder starting from the built-in defaults (no configuration file is read). */
+  public static Builder builder() {
+    return new Builder();
+  }
+
+  /** This container's name (the {@code CONTAINERNAME} setting, or one derived from host and pid). */
+  public String getName() {
+    return core.name();
+  }
+
+  /** The id of this container's incarnation: unique, new at every start. */
+  public String getId() {
+    return core.containerId();
+  }
+
+  /** The host name this container reports for its services. */
+  public String getHost() {
+    return core.host();
+  }
+
+  /**
+   * Registers every {@link TRADEService} method of {@code provider} as a service in
+   * {@code groups}; null, empty or blank group names mean no group. All or nothing.
+   *
+   * @return the registered services (empty when the object has no service methods)
+   * @throws TRADERegistrationException if {@code provider} is already registered, or one of its
+   *     annotated methods cannot be a service (the message names the method and the fix)
+   */
+  public Collection<TRADEServiceInfo> registerAllServices(Object provider, Collection<String> groups)
+      throws TRADEException {
+    Objects.requireNonNull(provider, "provider == null");
+    checkOpen();
+    List<LocalService> services = core.registry().register(provider, normalize(groups));
+    List<TRADEServiceInfo> infos = new ArrayList<>(services.size());
+    for (LocalService s : services) {
+      infos.add(bind(s.descriptor()));
+    }
+    return infos;
+  }
+
+  /** As {@link #registerAllServices(Object, Collection)}; {@code (String) null} means no group. */
+  public Collection<TRADEServiceInfo> registerAllServices(Object provider, String... groups)
+      throws TRADEException {
+    return registerAllServices(provider, groups == null ? List.of() : Arrays.asList(groups));
+  }
+
+  /** The TRADE paper's name for {@link #registerAllServices(Object, String...)} with one group. */
+  public Collection<TRADEServiceInfo> register(Object provider, String group) throws TRADEException {
+    return registerAllServices(provider, group);
+  }
+
+  /** The TRADE paper's name for {@link #registerAllServices(Object, Collection)}. */
+  public Collection<TRADEServiceInfo> register(Object provider, Collection<String> groups)
+      throws TRADEException {
+    return registerAllServices(provider, groups);
+  }
+
+  /**
+   * Removes every service of {@code provider}. Calls already running finish; later calls through
+   * existing infos fail with {@link TRADEServiceUnavailableException}.
+   *
+   * @throws TRADEServiceNotFoundException if {@code provider} is not registered here
+   */
+  public void deregister(Object provider) throws TRADEException {
+    Objects.requireNonNull(provider, "provider == null");
+    core.registry().deregister(provider);
+  }
+
+  /**
+   * The preferred service matching {@code constraints}: one of this container first (the earliest
+   * registered), then the nearest container's, then by container id and registration order.
+   *
+   * @param constraints null matches every service
+   * @throws TRADEServiceNotFoundException if none matches; the message names the constraints
+   */
+  public TRADEServiceInfo getAvailableService(TRADEServiceConstraints constraints)
+      throws TRADEException {
+    checkOpen();
+    TRADEServiceConstraints c = constraints == null ? new TRADEServiceConstraints() : constraints;
+    Entry e = core.registry().findFirst(c.name(), c.toQuery());
+    if (e == null) {
+      throw new TRADEServiceNotFoundException("No service matches " + c);
+    }
+    return bind(e.descriptor());
+  }
+
+  /** Every service of the system, in preference order. */
+  public Collection<TRADEServiceInfo> getAvailableServices() {
+    return getAvailableServices(null);
+  }
+
+  /** Every service matching {@code constraints} (null: all), in preference order; maybe none. */
+  public Collection<TRADEServiceInfo> getAvailableServices(TRADEServiceConstraints constraints) {
+    checkOpen();
+    TRADEServiceConstraints c = constraints == null ? new TRADEServiceConstraints() : constraints;
+    return bindAll(core.registry().find(c.name(), c.toQuery()), null);
+  }
+
+  /** Every service matching {@code constraints} whose method carries {@code annotation}. */
+  public Collection<TRADEServiceInfo> getAvailableServices(
+      Class<? extends Annotation> annotation, TRADEServiceConstraints constraints) {
+    Objects.requireNonNull(annotation, "annotation == null");
+    checkOpen();
+    TRADEServiceConstraints c = constraints == null ? new TRADEServiceConstraints() : constraints;
+    return bindAll(core.registry().find(c.name(), c.toQuery()), annotation);
+  }
+
+  /** Deregisters every service of this container and disconnects it. Idempotent. */
+  @Override
+  public void close() {
+    core.close();
+  }
+
+  /** A service info for {@code d} whose calls go through this container. */
+  TRADEServiceInfo bind(ServiceDescriptor d) {
+    return new TRADEServiceInfo(d, core);
+  }
+
+  private List<TRADEServiceInfo> bindAll(List<Entry> entries, Class<? extends Annotation> annotation) {
+    List<TRADEServiceInfo> infos = new ArrayList<>(entries.size());
+    for (Entry e : entries) {
+      if (annotation == null || hasAnnotation(e.descriptor(), annotation)) {
+        infos.add(bind(e.descriptor()));
+      }
+    }
+    return infos;
+  }
+
+  private static boolean hasAnnotation(ServiceDescriptor d, Class<? extends Annotation> type) {
+    for (Annotation a : d.annotations()) {
+      if (a.annotationType() == type) {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  private void checkOpen() {
+    if (core.isClosed()) {
+      throw new IllegalStateException("container " + core.name() + " is closed");
+    }
+  }
+
+  private static Set<String> normalize(Collection<String> groups) {
+    Set<String> result = new LinkedHashSet<>();
+    if (groups != null) {
+      for (String g : groups) {
+        if (g != null && !g.isBlank()) {
+          result.add(g);
+        }
+      }
+    }
+    return result;
+  }
+
+  /**
+   * Collects settings for a container. Starts from the built-in defaults; keys and values are those
+   * of {@code trade.properties} (see docs/configuration.md). Not thread-safe; the container it
+   * builds is.
+   */
+  public static final class Builder {
+    private Settings settings = Settings.defaults();
+
+    private Builder() {}
+
+    /**
+     * Starts over from the configuration TRADE would load for the default container: the file named
+     * by the system property {@code trade.properties.path}, else by the environment variable
+     * {@code TRADE_PROPERTIES_PATH}, else {@code trade.properties} on the class path, else the
+     * defaults.
+     *
+     * @throws IllegalArgumentException if that configuration is invalid (the message names the key)
+     */
+    public Builder loadConfiguration() {
+      settings = Settings.load();
+      return this;
+    }
+
+    /**
+     * Sets one setting.
+     *
+     * @throws IllegalArgumentException for an unknown key or a bad value (the message names both)
+     */
+    public Builder property(String key, String value) {
+      settings = settings.with(Objects.requireNonNull(key, "key == null"),
+          Objects.requireNonNull(value, "value == null"));
+      return this;
+    }
+
+    /** Sets every setting in {@code properties}, as {@link #property} does for each. */
+    public Builder properties(Properties properties) {
+      for (String key : properties.stringPropertyNames()) {
+        property(key, properties.getProperty(key));
+      }
+      return this;
+    }
+
+    /** The container's name ({@code CONTAINERNAME}). */
+    public Builder name(String name) {
+      return property("CONTAINERNAME", name);
+    }
+
+    /**
+     * Strict mode ({@code COPYDATAFORLOCALINVOKES}): local calls copy mutable arguments and results,
+     * so caller and provider never share a mutable object, as with remote calls.
+     */
+    public Builder copyDataForLocalInvokes(boolean copy) {
+      return property("COPYDATAFORLOCALINVOKES", Boolean.toString(copy));
+    }
+
+    public TRADEContainer build() {
+      return new TRADEContainer(settings);
+    }
+  }
+}

@@ -1,0 +1,228 @@
+package dev.trade;
+
+import dev.trade.internal.registry.Query;
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Objects;
+import java.util.Set;
+
+/**
+ * Which services a lookup or notification is about: a mutable, fluent builder.
+ *
+ * <p>Each method changes {@code this} and returns it, so both {@code c.name("x").argTypes(int.class)}
+ * and separate statements {@code c.name("x"); c.argTypes(int.class);} work; a later call of the
+ * same method replaces the earlier value (last write wins). A service matches when it satisfies
+ * every constraint that was set:
+ *
+ * <ul>
+ *   <li>{@link #name(String)}: the method name equals the given one;
+ *   <li>{@link #argTypes(Class[])}: exactly that many parameters, each declared parameter type
+ *       accepting the given type (a subtype, or the boxed/primitive counterpart); {@code argTypes()}
+ *       with no types means exactly zero parameters, and not calling it means any parameters;
+ *   <li>{@link #returnType(Class)}: the declared return type is the given one, a subtype of it, or
+ *       its boxed/primitive counterpart;
+ *   <li>{@link #inGroups(String...)}: registered in all of the given groups;
+ *       {@link #notInGroups(String...)}: in none of them;
+ *   <li>{@link #local()}: provided by the container that performs the lookup;
+ *       {@link #host(String)}: provided by a container on that host.
+ * </ul>
+ *
+ * <p><b>Or and not.</b> Constraints form a disjunctive normal form with negation: the conjunction
+ * above, minus every constraints object given to {@link #not(TRADEServiceConstraints)}, or any
+ * alternative given to {@link #or(TRADEServiceConstraints)}:
+ *
+ * <pre>{@code
+ * // openGripper or closeGripper, but not in group "Sim"
+ * new TRADEServiceConstraints().name("openGripper")
+ *     .or(new TRADEServiceConstraints().name("closeGripper"))
+ *     .not(new TRADEServiceConstraints().inGroups("Sim"));
+ * }</pre>
+ *
+ * Negations apply to the whole expression, alternatives are copied when added (so later changes
+ * to the argument do not affect this object).
+ *
+ * <p>Not thread-safe: build it in one thread, then share it freely for lookups (lookups only read).
+ */
+public final class TRADEServiceConstraints {
+  private String name;
+  private Class<?>[] argTypes;
+  private Class<?> returnType;
+  private final Set<String> inGroups = new LinkedHashSet<>();
+  private final Set<String> notInGroups = new LinkedHashSet<>();
+  private boolean local;
+  private String host;
+  private final List<TRADEServiceConstraints> alternatives = new ArrayList<>();
+  private final List<TRADEServiceConstraints> negations = new ArrayList<>();
+
+  /** Constraints that every service matches until methods are called. */
+  public TRADEServiceConstraints() {}
+
+  /** Only services with this method name; {@code null} removes the constraint. */
+  public TRADEServiceConstraints name(String name) {
+    this.name = name;
+    return this;
+  }
+
+  /**
+   * Only services whose parameters accept exactly these types, in order. With no arguments: only
+   * services without parameters. {@code argTypes((Class<?>[]) null)} removes the constraint.
+   *
+   * @throws NullPointerException if one of the types is null
+   */
+  public TRADEServiceConstraints argTypes(Class<?>... types) {
+    if (types != null) {
+      for (int i = 0; i < types.length; i++) {
+        Objects.requireNonNull(types[i], "argTypes[" + i + "] == null");
+      }
+      this.argTypes = types.clone();
+    } else {
+      this.argTypes = null;
+    }
+    return this;
+  }
+
+  /** Only services whose return type fits this one; {@code null} removes the constraint. */
+  public TRADEServiceConstraints returnType(Class<?> type) {
+    this.returnType = type;
+    return this;
+  }
+
+  /** Only services registered in every one of these groups (adds to earlier calls). */
+  public TRADEServiceConstraints inGroups(String... groups) {
+    addGroups(inGroups, groups);
+    return this;
+  }
+
+  /** Only services registered in none of these groups (adds to earlier calls). */
+  public TRADEServiceConstraints notInGroups(String... groups) {
+    addGroups(notInGroups, groups);
+    return this;
+  }
+
+  /** Only services of the container that performs the lookup. */
+  public TRADEServiceConstraints local() {
+    this.local = true;
+    return this;
+  }
+
+  /**
+   * Only services of containers on this host (the host name or address a container announces;
+   * {@code null} removes the constraint).
+   */
+  public TRADEServiceConstraints host(String host) {
+    this.host = host;
+    return this;
+  }
+
+  /** Also match services that match {@code alternative} (a copy of it is taken now). */
+  public TRADEServiceConstraints or(TRADEServiceConstraints alternative) {
+    alternatives.add(Objects.requireNonNull(alternative, "alternative == null").copy());
+    return this;
+  }
+
+  /** Exclude services that match {@code excluded} (a copy of it is taken now). */
+  public TRADEServiceConstraints not(TRADEServiceConstraints excluded) {
+    negations.add(Objects.requireNonNull(excluded, "excluded == null").copy());
+    return this;
+  }
+
+  /** The method name constraint, or null when any name matches. */
+  String name() {
+    return name;
+  }
+
+  /** An immutable snapshot for matching; later changes to this object do not affect it. */
+  Query toQuery() {
+    List<Query> alt = new ArrayList<>(alternatives.size());
+    for (TRADEServiceConstraints a : alternatives) {
+      alt.add(a.toQuery());
+    }
+    List<Query> neg = new ArrayList<>(negations.size());
+    for (TRADEServiceConstraints n : negations) {
+      neg.add(n.toQuery());
+    }
+    return new Query(
+        name,
+        argTypes == null ? null : List.of(argTypes),
+        returnType,
+        Set.copyOf(inGroups),
+        Set.copyOf(notInGroups),
+        local,
+        host,
+        alt,
+        neg);
+  }
+
+  private TRADEServiceConstraints copy() {
+    TRADEServiceConstraints c = new TRADEServiceConstraints();
+    c.name = name;
+    c.argTypes = argTypes;
+    c.returnType = returnType;
+    c.inGroups.addAll(inGroups);
+    c.notInGroups.addAll(notInGroups);
+    c.local = local;
+    c.host = host;
+    c.alternatives.addAll(alternatives);
+    c.negations.addAll(negations);
+    return c;
+  }
+
+  private static void addGroups(Set<String> target, String[] groups) {
+    if (groups == null) {
+      return;
+    }
+    for (String g : groups) {
+      if (g != null && !g.isBlank()) {
+        target.add(g);
+      }
+    }
+  }
+
+  @Override
+  public String toString() {
+    StringBuilder sb = new StringBuilder("TRADEServiceConstraints{");
+    String sep = "";
+    if (name != null) {
+      sb.append("name=").append(name);
+      sep = ", ";
+    }
+    if (argTypes != null) {
+      sb.append(sep).append("argTypes=(");
+      for (int i = 0; i < argTypes.length; i++) {
+        sb.append(i == 0 ? "" : ",").append(argTypes[i].getTypeName());
+      }
+      sb.append(')');
+      sep = ", ";
+    }
+    if (returnType != null) {
+      sb.append(sep).append("returnType=").append(returnType.getTypeName());
+      sep = ", ";
+    }
+    if (!inGroups.isEmpty()) {
+      sb.append(sep).append("inGroups=").append(inGroups);
+      sep = ", ";
+    }
+    if (!notInGroups.isEmpty()) {
+      sb.append(sep).append("notInGroups=").append(notInGroups);
+      sep = ", ";
+    }
+    if (local) {
+      sb.append(sep).append("local");
+      sep = ", ";
+    }
+    if (host != null) {
+      sb.append(sep).append("host=").append(host);
+      sep = ", ";
+    }
+    for (TRADEServiceConstraints n : negations) {
+      sb.append(sep).append("not ").append(n);
+      sep = ", ";
+    }
+    for (TRADEServiceConstraints a : alternatives) {
+      sb.append(sep).append("or ").append(a);
+      sep = ", ";
+    }
+    return sb.append('}').toString();
+  }
+}

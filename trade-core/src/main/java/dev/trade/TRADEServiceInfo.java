@@ -1,0 +1,216 @@
+package dev.trade;
+
+import dev.trade.internal.call.ServiceCaller;
+import dev.trade.internal.registry.ServiceDescriptor;
+import dev.trade.internal.registry.Types;
+import java.io.ObjectStreamException;
+import java.io.Serializable;
+import java.lang.annotation.Annotation;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.List;
+import java.util.Objects;
+import java.util.LinkedHashSet;
+
+/**
+ * A handle to one provided service: what it is (name, parameters, return type, groups,
+ * annotations), where it lives (container and host), and a way to call it.
+ *
+ * <p>A service info is a value. It may be stored, passed as a service argument to another
+ * container and compared after it travelled: {@link #equals} and {@link #hashCode} compare the
+ * identity of the provided service (its container's incarnation and its service number), not the
+ * Java object. It stays callable while the service is registered; afterwards every call fails with
+ * {@link TRADEServiceUnavailableException}.
+ *
+ * <p>The public fields keep TRADE's names; the arrays are copies that callers may not change.
+ * Immutable and safe for concurrent use.
+ */
+public final class TRADEServiceInfo implements Serializable {
+  private static final long serialVersionUID = 1L;
+
+  /** The method name, e.g. {@code openGripper}. */
+  public final String serviceName;
+  /** {@code name(T1,T2)} with each parameter's {@link Class#getTypeName()}: {@code openGripper(int)}. */
+  public final String serviceString;
+  /** The parameter names (real names when the provider was compiled with {@code -parameters}). */
+  public final String[] serviceParameterNames;
+  /** {@link Class#getTypeName()} of each parameter type. */
+  public final String[] serviceParameterTypeNames;
+  /** {@link Class#getTypeName()} of the return type. */
+  public final String serviceReturnTypeName;
+
+  private final transient ServiceDescriptor descriptor;
+  private final transient ServiceCaller caller;
+  private final transient long timeoutNanos;
+
+  TRADEServiceInfo(ServiceDescriptor descriptor, ServiceCaller caller) {
+    this(descriptor, caller, 0);
+  }
+
+  private TRADEServiceInfo(ServiceDescriptor descriptor, ServiceCaller caller, long timeoutNanos) {
+    this.descriptor = Objects.requireNonNull(descriptor, "descriptor == null");
+    this.caller = Objects.requireNonNull(caller, "caller == null");
+    this.timeoutNanos = timeoutNanos;
+    this.serviceName = descriptor.name();
+    this.serviceString = descriptor.signature();
+    this.serviceParameterNames = descriptor.parameterNames().toArray(new String[0]);
+    this.serviceParameterTypeNames = descriptor.parameterTypeNames().toArray(new String[0]);
+    this.serviceReturnTypeName = descriptor.returnTypeName();
+  }
+
+  /**
+   * Calls the service with {@code args} and returns its result.
+   *
+   * <p>{@code returnType} may be the declared return type, a supertype of it ({@code Object.class}
+   * takes anything), a subtype (checked on the returned value), a primitive class
+   * ({@code boolean.class} returns a {@code Boolean} usable as a {@code boolean}) or
+   * {@code void.class} (returns null whatever the service returns). The arguments are checked
+   * against the signature before the service runs. Passing a single array to a service whose only
+   * parameter is an array passes that array as the one argument.
+   *
+   * @throws TRADEBadArgumentsException the arguments or {@code returnType} do not fit; nothing ran
+   * @throws TRADEInvocationException the service threw; the cause is what it threw
+   * @throws TRADEServiceUnavailableException the service is gone (deregistered, container left)
+   * @throws TRADETimeoutException a remote reply did not arrive before the deadline
+   * @throws TRADESerializationException an argument or the result could not be copied or travel
+   */
+  public <T> T call(Class<T> returnType, Object... args) throws TRADEException {
+    Objects.requireNonNull(returnType, "returnType == null");
+    return caller.call(descriptor, returnType, args, timeoutNanos);
+  }
+
+  /**
+   * This service info with another deadline for its calls (the default comes from the
+   * {@code CALLTIMEOUT} setting). Equal to this one.
+   */
+  public TRADEServiceInfo withTimeout(Duration timeout) {
+    if (timeout.isNegative() || timeout.isZero()) {
+      throw new IllegalArgumentException("timeout must be positive: " + timeout);
+    }
+    return new TRADEServiceInfo(descriptor, caller, timeout.toNanos());
+  }
+
+  /**
+   * The declared parameter types.
+   *
+   * @throws TypeNotPresentException if a parameter type is not known in this JVM
+   */
+  public Class<?>[] getServiceParameterTypes() {
+    Class<?>[] types = new Class<?>[serviceParameterTypeNames.length];
+    for (int i = 0; i < types.length; i++) {
+      types[i] = resolve(descriptor.parameterTypeNames().get(i));
+    }
+    return types;
+  }
+
+  /**
+   * The declared return type ({@code void.class} for none).
+   *
+   * @throws TypeNotPresentException if the type is not known in this JVM
+   */
+  public Class<?> getServiceReturnType() {
+    return resolve(descriptor.returnTypeName());
+  }
+
+  /** The groups the service was registered in, in registration order; empty for none. */
+  public Collection<String> getGroups() {
+    return descriptor.groups();
+  }
+
+  /** The annotations on the service method and the declarations it overrides, one per type. */
+  public Annotation[] getAnnotations() {
+    return descriptor.annotations().toArray(new Annotation[0]);
+  }
+
+  /** The id of the providing container's incarnation (new each time a container starts). */
+  public String getContainerId() {
+    return descriptor.containerId();
+  }
+
+  /** The providing container's name. */
+  public String getContainerName() {
+    return descriptor.containerName();
+  }
+
+  /** The host of the providing container, as it announced itself. */
+  public String getHost() {
+    return descriptor.host();
+  }
+
+  /** Whether the service is provided by the container this info was obtained from. */
+  public boolean isLocal() {
+    return descriptor.containerId().equals(caller.containerId());
+  }
+
+  ServiceDescriptor descriptor() {
+    return descriptor;
+  }
+
+  private static Class<?> resolve(String typeName) {
+    ClassLoader context = Thread.currentThread().getContextClassLoader();
+    Class<?> c = context == null ? null : Types.resolve(typeName, context);
+    if (c == null) {
+      c = Types.resolve(typeName, TRADEServiceInfo.class.getClassLoader());
+    }
+    if (c == null) {
+      throw new TypeNotPresentException(typeName, null);
+    }
+    return c;
+  }
+
+  @Override
+  public boolean equals(Object o) {
+    return o instanceof TRADEServiceInfo && descriptor.sameService(((TRADEServiceInfo) o).descriptor);
+  }
+
+  @Override
+  public int hashCode() {
+    return descriptor.containerId().hashCode() * 31 + Long.hashCode(descriptor.serviceId());
+  }
+
+  /** {@code serviceString [groups] @ container}, for logs. */
+  @Override
+  public String toString() {
+    return serviceString + (descriptor.groups().isEmpty() ? "" : " " + descriptor.groups())
+        + " @ " + descriptor.containerName();
+  }
+
+  // Java serialization (for users that keep infos in Serializable objects) goes through a plain
+  // form and binds the result to the default container; annotations are not carried.
+  private Object writeReplace() throws ObjectStreamException {
+    return new SerialForm(this);
+  }
+
+  private static final class SerialForm implements Serializable {
+    private static final long serialVersionUID = 1L;
+    private final String containerId;
+    private final String containerName;
+    private final String host;
+    private final long serviceId;
+    private final String name;
+    private final ArrayList<String> parameterNames;
+    private final ArrayList<String> parameterTypeNames;
+    private final String returnTypeName;
+    private final ArrayList<String> groups;
+
+    SerialForm(TRADEServiceInfo info) {
+      ServiceDescriptor d = info.descriptor;
+      containerId = d.containerId();
+      containerName = d.containerName();
+      host = d.host();
+      serviceId = d.serviceId();
+      name = d.name();
+      parameterNames = new ArrayList<>(d.parameterNames());
+      parameterTypeNames = new ArrayList<>(d.parameterTypeNames());
+      returnTypeName = d.returnTypeName();
+      groups = new ArrayList<>(d.groups());
+    }
+
+    private Object readResolve() throws ObjectStreamException {
+      ServiceDescriptor d = new ServiceDescriptor(containerId, containerName, host, serviceId, name,
+          parameterNames, parameterTypeNames, returnTypeName, new LinkedHashSet<>(groups), List.of());
+      return TRADE.defaultContainer().bind(d);
+    }
+  }
+}

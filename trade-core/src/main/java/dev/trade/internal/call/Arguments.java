@@ -1,0 +1,129 @@
+package dev.trade.internal.call;
+
+import dev.trade.TRADEBadArgumentsException;
+import dev.trade.internal.registry.ServiceDescriptor;
+import dev.trade.internal.registry.Types;
+import java.util.List;
+
+/**
+ * Checks call arguments against a service's signature before anything runs, and applies the
+ * primitive widening conversions that Java reflection applies ({@code int} → {@code long} …).
+ * Stateless and thread-safe.
+ */
+public final class Arguments {
+  private static final Object[] NONE = {};
+
+  private Arguments() {}
+
+  /**
+   * Undoes Java's varargs spreading for services with a single array parameter: in
+   * {@code info.call(void.class, new String[] {"a", "b"})} Java passes the array itself as the
+   * argument list, although the caller meant one argument. A null list means no arguments.
+   */
+  public static Object[] normalize(ServiceDescriptor d, Object[] args) {
+    if (args == null) {
+      return NONE;
+    }
+    List<String> types = d.parameterTypeNames();
+    if (types.size() == 1 && types.get(0).endsWith("[]")
+        && !(args.length == 1 && (args[0] == null || args[0].getClass().isArray()))) {
+      return new Object[] {args};
+    }
+    return args;
+  }
+
+  /**
+   * Returns {@code args}, or a converted copy where a value needed widening.
+   *
+   * @throws TRADEBadArgumentsException naming the first parameter (index, name, expected type)
+   *     that the arguments do not fit, or the expected parameter list on a count mismatch
+   */
+  public static Object[] check(ServiceDescriptor d, List<Class<?>> types, Object[] args)
+      throws TRADEBadArgumentsException {
+    if (args.length != types.size()) {
+      throw new TRADEBadArgumentsException("Service " + d.signature() + " takes " + types.size()
+          + " argument" + (types.size() == 1 ? "" : "s") + " " + parameterList(d) + " but got "
+          + args.length);
+    }
+    Object[] result = args;
+    for (int i = 0; i < args.length; i++) {
+      Class<?> type = types.get(i);
+      Object v = args[i];
+      if (v == null) {
+        if (type.isPrimitive()) {
+          throw bad(d, i, "is null, but the parameter is primitive");
+        }
+        continue;
+      }
+      if (Types.box(type).isInstance(v)) {
+        continue;
+      }
+      Object widened = type.isPrimitive() ? widen(type, v) : null;
+      if (widened == null) {
+        throw bad(d, i, "is a " + v.getClass().getTypeName());
+      }
+      if (result == args) {
+        result = args.clone();
+      }
+      result[i] = widened;
+    }
+    return result;
+  }
+
+  private static Object widen(Class<?> to, Object v) {
+    long integral;
+    if (v instanceof Byte || v instanceof Short || v instanceof Integer) {
+      integral = ((Number) v).longValue();
+    } else if (v instanceof Character) {
+      integral = (Character) v;
+      if (to == short.class) {
+        return null;
+      }
+    } else if (v instanceof Long) {
+      integral = (Long) v;
+      if (to == float.class) {
+        return (float) integral;
+      } else if (to == double.class) {
+        return (double) integral;
+      }
+      return null;
+    } else if (v instanceof Float && to == double.class) {
+      return ((Float) v).doubleValue();
+    } else {
+      return null;
+    }
+    int rank = rank(v);
+    if (to == short.class && rank < 2) {
+      return (short) integral;
+    } else if (to == int.class && rank < 3) {
+      return (int) integral;
+    } else if (to == long.class) {
+      return integral;
+    } else if (to == float.class) {
+      return (float) integral;
+    } else if (to == double.class) {
+      return (double) integral;
+    }
+    return null;
+  }
+
+  /** byte 1, short 2, char/int 3. */
+  private static int rank(Object v) {
+    return v instanceof Byte ? 1 : v instanceof Short ? 2 : 3;
+  }
+
+  private static TRADEBadArgumentsException bad(ServiceDescriptor d, int i, String problem) {
+    return new TRADEBadArgumentsException("Argument " + i + " ('" + d.parameterNames().get(i)
+        + "', expected " + d.parameterTypeNames().get(i) + ") " + problem
+        + "\n    for service " + d.signature());
+  }
+
+  private static String parameterList(ServiceDescriptor d) {
+    StringBuilder sb = new StringBuilder("(");
+    for (int i = 0; i < d.parameterNames().size(); i++) {
+      sb.append(i == 0 ? "" : ", ").append(d.parameterTypeNames().get(i)).append(' ')
+          .append(d.parameterNames().get(i));
+    }
+    return sb.append(')').toString();
+  }
+}

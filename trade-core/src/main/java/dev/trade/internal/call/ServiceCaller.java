@@ -1,0 +1,21 @@
+package dev.trade.internal.call;
+
+import dev.trade.TRADEException;
+import dev.trade.internal.registry.ServiceDescriptor;
+
+/**
+ * What a {@code TRADEServiceInfo} calls through: the container it was obtained from (or decoded
+ * in). Implementations are thread-safe.
+ */
+public interface ServiceCaller {
+  /** Id of this container's incarnation, to tell local services from remote ones. */
+  String containerId();
+
+  /**
+   * Calls the service and returns its result as {@code returnType}.
+   *
+   * @param timeoutNanos how long to wait for a remote reply; non-positive means the default
+   */
+  <T> T call(ServiceDescriptor service, Class<T> returnType, Object[] args, long timeoutNanos)
+      throws TRADEException;
+}

@@ -1,0 +1,225 @@
+package dev.trade.internal.registry;
+
+import dev.trade.TRADERegistrationException;
+import dev.trade.TRADEServiceNotFoundException;
+import java.lang.annotation.Annotation;
+import java.lang.reflect.Method;
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.Comparator;
+import java.util.HashMap;
+import java.util.IdentityHashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.LinkedHashSet;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.atomic.AtomicLong;
+
+/**
+ * The table of every service this container knows: its own and, replicated, those of every other
+ * container of the system.
+ *
+ * <p>Lookups read an immutable snapshot without locking; changes (rare) take the registry's lock,
+ * build a new snapshot and publish it, then tell the listeners while still holding the lock, so
+ * that listeners see changes exactly once and in order. Listeners must therefore only record or
+ * enqueue, never block or call back into the registry's write methods.
+ *
+ * <p>Order: lookups return services of this container first (in registration order), then those of
+ * other containers by distance, then by container id and service id: deterministic, never random.
+ *
+ * <p>This class is safe for concurrent use.
+ */
+public final class Registry {
+  /** Told of every change, under the registry's lock. */
+  public interface Listener {
+    void changed(List<Entry> added, List<Entry> removed);
+  }
+
+  private static final Comparator<Entry> PREFERENCE =
+      Comparator.comparingInt(Entry::distance)
+          .thenComparing(e -> e.descriptor().containerId())
+          .thenComparingLong(e -> e.descriptor().serviceId());
+
+  private final String containerId;
+  private final String containerName;
+  private final String host;
+  private final AtomicLong nextServiceId = new AtomicLong(1);
+  private final Map<Long, LocalService> localById = new ConcurrentHashMap<>();
+  private final List<Listener> listeners = new CopyOnWriteArrayList<>();
+  // Guarded by this.
+  private final Map<Object, List<LocalService>> byProvider = new IdentityHashMap<>();
+  // Guarded by this: every known entry by container id, then service id.
+  private final Map<String, Map<Long, Entry>> tables = new HashMap<>();
+  private long localVersion;
+  private volatile Snapshot snapshot = Snapshot.EMPTY;
+
+  public Registry(String containerId, String containerName, String host) {
+    this.containerId = containerId;
+    this.containerName = containerName;
+    this.host = host;
+    tables.put(containerId, new LinkedHashMap<>());
+  }
+
+  public String containerId() {
+    return containerId;
+  }
+
+  public void addListener(Listener l) {
+    listeners.add(l);
+  }
+
+  public void removeListener(Listener l) {
+    listeners.remove(l);
+  }
+
+  /**
+   * Registers every service of {@code provider} in {@code groups}: all or nothing.
+   *
+   * @throws TRADERegistrationException if the provider is already registered, or one of its
+   *     annotated methods is not a valid service (the message names it)
+   */
+  public List<LocalService> register(Object provider, Collection<String> groups)
+      throws TRADERegistrationException {
+    List<Method> methods = ServiceScanner.serviceMethods(provider.getClass());
+    List<LocalService> prepared = new ArrayList<>(methods.size());
+    for (Method m : methods) {
+      prepared.add(ServiceScanner.prepare(provider, m, (name, names, types, ret, annotations) ->
+          descriptor(name, names, types, ret, groups, annotations)));
+    }
+    synchronized (this) {
+      if (byProvider.containsKey(provider)) {
+        throw new TRADERegistrationException("Object " + describe(provider)
+            + " is already registered; deregister it first to register it again");
+      }
+      byProvider.put(provider, prepared);
+      List<Entry> added = new ArrayList<>(prepared.size());
+      Map<Long, Entry> own = tables.get(containerId);
+      for (LocalService s : prepared) {
+        localById.put(s.descriptor().serviceId(), s);
+        Entry e = new Entry(s.descriptor(), 0, s);
+        own.put(s.descriptor().serviceId(), e);
+        added.add(e);
+      }
+      localVersion++;
+      publish(added, List.of());
+    }
+    return prepared;
+  }
+
+  /**
+   * Removes every service of {@code provider}; calls in progress finish, later calls fail.
+   *
+   * @throws TRADEServiceNotFoundException if the provider is not registered here
+   */
+  public synchronized List<LocalService> deregister(Object provider) throws TRADEServiceNotFoundException {
+    List<LocalService> services = byProvider.remove(provider);
+    if (services == null) {
+      throw new TRADEServiceNotFoundException("Object " + describe(provider) + " is not registered");
+    }
+    removeLocal(services);
+    return services;
+  }
+
+  /** Removes every local service (used when the container closes). */
+  public synchronized void deregisterAll() {
+    List<LocalService> all = new ArrayList<>();
+    byProvider.values().forEach(all::addAll);
+    byProvider.clear();
+    removeLocal(all);
+  }
+
+  private void removeLocal(List<LocalService> services) {
+    Map<Long, Entry> own = tables.get(containerId);
+    List<Entry> removed = new ArrayList<>(services.size());
+    for (LocalService s : services) {
+      s.deactivate();
+      localById.remove(s.descriptor().serviceId());
+      Entry e = own.remove(s.descriptor().serviceId());
+      if (e != null) {
+        removed.add(e);
+      }
+    }
+    localVersion++;
+    publish(List.of(), removed);
+  }
+
+  /** The active local service with this id, or null. Lock-free. */
+  public LocalService local(long serviceId) {
+    return localById.get(serviceId);
+  }
+
+  /** The services matching {@code query}, in preference order; {@code name} narrows the scan. */
+  public List<Entry> find(String name, Query query) {
+    Snapshot s = snapshot;
+    List<Entry> candidates = name == null ? s.ordered : s.byName.getOrDefault(name, List.of());
+    List<Entry> result = new ArrayList<>();
+    for (Entry e : candidates) {
+      if (query.matches(e, containerId)) {
+        result.add(e);
+      }
+    }
+    return result;
+  }
+
+  /** The first match in preference order, or null. */
+  public Entry findFirst(String name, Query query) {
+    Snapshot s = snapshot;
+    List<Entry> candidates = name == null ? s.ordered : s.byName.getOrDefault(name, List.of());
+    for (Entry e : candidates) {
+      if (query.matches(e, containerId)) {
+        return e;
+      }
+    }
+    return null;
+  }
+
+  /** Every known entry, in preference order. */
+  public List<Entry> all() {
+    return snapshot.ordered;
+  }
+
+  /** Whether the service is still known (local and active, or listed by its container). */
+  public boolean contains(ServiceDescriptor d) {
+    Entry e = snapshot.byKey.get(new Key(d.containerId(), d.serviceId()));
+    return e != null;
+  }
+
+  private ServiceDescriptor descriptor(String name, List<String> names, List<String> types,
+      String ret, Collection<String> groups, List<Annotation> annotations) {
+    return new ServiceDescriptor(containerId, containerName, host, nextServiceId.getAndIncrement(),
+        name, names, types, ret, new LinkedHashSet<>(groups), annotations);
+  }
+
+  private void publish(List<Entry> added, List<Entry> removed) {
+    snapshot = Snapshot.of(tables);
+    for (Listener l : listeners) {
+      l.changed(added, removed);
+    }
+  }
+
+  private static String describe(Object provider) {
+    return provider.getClass().getName() + "@" + Integer.toHexString(System.identityHashCode(provider));
+  }
+
+  private record Key(String containerId, long serviceId) {}
+
+  private record Snapshot(List<Entry> ordered, Map<String, List<Entry>> byName, Map<Key, Entry> byKey) {
+    static final Snapshot EMPTY = new Snapshot(List.of(), Map.of(), Map.of());
+
+    static Snapshot of(Map<String, Map<Long, Entry>> tables) {
+      List<Entry> all = new ArrayList<>();
+      tables.values().forEach(t -> all.addAll(t.values()));
+      all.sort(PREFERENCE);
+      Map<String, List<Entry>> byName = new HashMap<>();
+      Map<Key, Entry> byKey = new HashMap<>();
+      for (Entry e : all) {
+        byName.computeIfAbsent(e.descriptor().name(), k -> new ArrayList<>()).add(e);
+        byKey.put(new Key(e.descriptor().containerId(), e.descriptor().serviceId()), e);
+      }
+      byName.replaceAll((k, v) -> List.copyOf(v));
+      return new Snapshot(List.copyOf(all), Map.copyOf(byName), Map.copyOf(byKey));
+    }
+  }
+}

@@ -1,0 +1,80 @@
+package dev.trade.internal.registry;
+
+import java.util.Map;
+
+/** Type-name helpers shared by matching, argument checks and return conversion. Stateless. */
+public final class Types {
+  private static final Map<String, Class<?>> PRIMITIVES =
+      Map.of(
+          "boolean", boolean.class,
+          "byte", byte.class,
+          "short", short.class,
+          "char", char.class,
+          "int", int.class,
+          "long", long.class,
+          "float", float.class,
+          "double", double.class,
+          "void", void.class);
+
+  private Types() {}
+
+  /** The boxed class for a primitive (void → Void), the class itself otherwise. */
+  public static Class<?> box(Class<?> c) {
+    if (!c.isPrimitive()) {
+      return c;
+    }
+    if (c == int.class) {
+      return Integer.class;
+    } else if (c == boolean.class) {
+      return Boolean.class;
+    } else if (c == long.class) {
+      return Long.class;
+    } else if (c == double.class) {
+      return Double.class;
+    } else if (c == float.class) {
+      return Float.class;
+    } else if (c == short.class) {
+      return Short.class;
+    } else if (c == byte.class) {
+      return Byte.class;
+    } else if (c == char.class) {
+      return Character.class;
+    }
+    return Void.class;
+  }
+
+  /**
+   * Resolves a {@link Class#getTypeName()} (e.g. {@code int}, {@code java.lang.String[]},
+   * {@code com.acme.Term[][]}) without initializing the class, or returns null when the class is not
+   * known to {@code loader}.
+   */
+  public static Class<?> resolve(String typeName, ClassLoader loader) {
+    Class<?> p = PRIMITIVES.get(typeName);
+    if (p != null) {
+      return p;
+    }
+    int dims = 0;
+    String base = typeName;
+    while (base.endsWith("[]")) {
+      base = base.substring(0, base.length() - 2);
+      dims++;
+    }
+    Class<?> c = PRIMITIVES.get(base);
+    if (c == null) {
+      try {
+        c = Class.forName(base, false, loader);
+      } catch (ClassNotFoundException | LinkageError e) {
+        return null;
+      }
+    }
+    for (int i = 0; i < dims; i++) {
+      c = c.arrayType();
+    }
+    return c;
+  }
+
+  /** True when a value of type {@code given} can be passed where {@code declared} is expected. */
+  public static boolean accepts(Class<?> declared, Class<?> given) {
+    return box(declared).isAssignableFrom(box(given));
+  }
+}
