@@ -118,7 +118,7 @@ public final class TRADEContainer implements AutoCloseable {
       throws TRADEException {
     checkOpen();
     TRADEServiceConstraints c = constraints == null ? new TRADEServiceConstraints() : constraints;
-    Entry e = core.registry().findFirst(c.name(), c.toQuery());
+    Entry e = core.registry().findFirst(c.requiredName(), c.toQuery());
     if (e == null) {
       throw new TRADEServiceNotFoundException("No service matches " + c);
     }
@@ -134,7 +134,7 @@ public final class TRADEContainer implements AutoCloseable {
   public Collection<TRADEServiceInfo> getAvailableServices(TRADEServiceConstraints constraints) {
     checkOpen();
     TRADEServiceConstraints c = constraints == null ? new TRADEServiceConstraints() : constraints;
-    return bindAll(core.registry().find(c.name(), c.toQuery()), null);
+    return bindAll(core.registry().find(c.requiredName(), c.toQuery()), null);
   }
 
   /** Every service matching {@code constraints} whose method carries {@code annotation}. */
@@ -143,7 +143,7 @@ public final class TRADEContainer implements AutoCloseable {
     Objects.requireNonNull(annotation, "annotation == null");
     checkOpen();
     TRADEServiceConstraints c = constraints == null ? new TRADEServiceConstraints() : constraints;
-    return bindAll(core.registry().find(c.name(), c.toQuery()), annotation);
+    return bindAll(core.registry().find(c.requiredName(), c.toQuery()), annotation);
   }
 
   /** Deregisters every service of this container and disconnects it. Idempotent. */

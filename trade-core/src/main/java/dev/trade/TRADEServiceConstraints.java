@@ -127,9 +127,12 @@ public final class TRADEServiceConstraints {
     return this;
   }
 
-  /** The method name constraint, or null when any name matches. */
-  String name() {
-    return name;
+  /**
+   * A name every match must have (to narrow the scan to one name), or null when matches may have
+   * any name (no name given, or alternatives that may name others).
+   */
+  String requiredName() {
+    return alternatives.isEmpty() ? name : null;
   }
 
   /** An immutable snapshot for matching; later changes to this object do not affect it. */
