@@ -19,7 +19,8 @@ final class Addresses {
   private static final Pattern DIGITS_AND_DOTS = Pattern.compile("[0-9.]+");
   private static final Pattern IPV6_CHARS = Pattern.compile("[0-9A-Fa-f:.]+");
   private static final Pattern ZONE = Pattern.compile("[A-Za-z0-9_.-]+");
-  // RFC 1123 labels, plus '_' because container runtimes hand out such names (e.g. compose services).
+  // RFC 1123 labels, plus '_' because container runtimes hand out such names
+  // (e.g. compose services).
   private static final Pattern LABEL =
       Pattern.compile("[A-Za-z0-9_]([A-Za-z0-9_-]{0,61}[A-Za-z0-9_])?");
 

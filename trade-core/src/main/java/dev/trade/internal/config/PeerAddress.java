@@ -20,7 +20,8 @@ import java.util.Set;
  * {@link Settings} accepts it in {@code SERVERIPS} and refuses it in {@code CONNECTCONTAINERS};
  * this record itself allows 0..65535. Instances are immutable and safe for concurrent use.
  *
- * @param host an IPv4 literal, host name, or IPv6 literal (without brackets, optional {@code %zone})
+ * @param host an IPv4 literal, host name, or IPv6 literal (without brackets, with an optional
+ *     {@code %zone})
  * @param port 0..65535; 0 means any free port
  */
 public record PeerAddress(String host, int port) {

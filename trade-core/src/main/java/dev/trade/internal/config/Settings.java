@@ -30,7 +30,7 @@ import java.util.function.Function;
  * }</pre>
  *
  * <p>Keys are TRADE's upper-case names, matched case-sensitively. Each key is validated on its
- * own, so the order of {@code with} calls never matters; relations between keys (such as
+ * own, so the order in which different keys are set never matters; relations between keys (such as
  * FAILURETIMEOUT being several HEARTBEATINTERVALs) are the concern of the code that uses them.
  * The key {@code RUNWEBSERVER}, which TRADE once read, is accepted and ignored. See
  * {@code docs/configuration.md} for every key.

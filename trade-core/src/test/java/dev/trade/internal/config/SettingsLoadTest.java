@@ -17,7 +17,10 @@ import java.util.function.Function;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** Resolution order of {@link Settings#load}: system property, environment, class path, defaults. */
+/**
+ * Resolution order of {@link Settings#load}: system property, environment, class path,
+ * then defaults.
+ */
 class SettingsLoadTest {
   private static final Function<String, String> UNSET = name -> null;
 

@@ -91,7 +91,8 @@ class SettingsTest {
         .with("FAILURETIMEOUT", "1000")
         .with("DISCOVERYRANGE", "Subnet")
         .with("DISCOVERYINTERFACES", "eth0, wlan0 eth0")
-        .with("SERIALIZATIONALLOWLIST", "com.example.Dto; com.example.model.*;java.base/java.time.**;")
+        .with("SERIALIZATIONALLOWLIST",
+            "com.example.Dto; com.example.model.*;java.base/java.time.**;")
         .with("MAXFRAMESIZE", "1024");
     assertEquals("arm-1", s.containerName());
     assertTrue(s.startDiscovery());
