@@ -1,0 +1,140 @@
+package dev.trade.internal.codec;
+
+import dev.trade.TRADESerializationException;
+import dev.trade.internal.registry.ServiceDescriptor;
+import java.lang.annotation.Annotation;
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+
+/**
+ * Encodes a {@code TRADEServiceInfo} as its {@link ServiceDescriptor} and binds decoded descriptors
+ * through the codec's {@link InfoBinding}.
+ *
+ * <p>Each annotation travels in an entry prefixed with its byte length, so that a receiver that does
+ * not know or allow an annotation's class (or a class in its members) skips just that annotation,
+ * as the descriptor's contract says ("those whose class is known here"). Likewise the sender leaves
+ * out annotations whose members it cannot encode.
+ */
+final class DescriptorCodec {
+  private DescriptorCodec() {}
+
+  static void write(Encoder e, ServiceDescriptor d) throws TRADESerializationException {
+    ByteSink entries = new ByteSink(d.annotations().isEmpty() ? 0 : 64);
+    int count = 0;
+    for (Annotation a : d.annotations()) {
+      int at = entries.size();
+      entries.writeInt(0);
+      try {
+        AnnotationCodec.write(new Encoder(entries, e.limits, e.info), a);
+        entries.putInt(at, entries.size() - at - 4);
+        count++;
+      } catch (TRADESerializationException ex) {
+        entries.truncate(at); // leave this annotation out
+      }
+    }
+    ByteSink out = e.out;
+    out.writeByte(Tags.SERVICE_INFO);
+    out.writeText(d.containerId());
+    out.writeText(d.containerName());
+    out.writeText(d.host());
+    out.writeLong(d.serviceId());
+    out.writeText(d.name());
+    out.writeVarUInt(d.parameterNames().size());
+    for (String s : d.parameterNames()) {
+      out.writeText(s);
+    }
+    for (String s : d.parameterTypeNames()) {
+      out.writeText(s);
+    }
+    out.writeText(d.returnTypeName());
+    out.writeVarUInt(d.groups().size());
+    for (String s : d.groups()) {
+      out.writeText(s);
+    }
+    out.writeVarUInt(count);
+    out.writeBytes(entries.array(), 0, entries.size());
+    e.checkRoom(0);
+  }
+
+  static Object read(Decoder d) throws TRADESerializationException {
+    d.enter();
+    String containerId = d.readText();
+    String containerName = d.readText();
+    String host = d.readText();
+    long serviceId = d.in.readLong();
+    String name = d.readText();
+    int n = d.readCount(2);
+    List<String> parameterNames = readTexts(d, n);
+    List<String> parameterTypeNames = readTexts(d, n);
+    String returnTypeName = d.readText();
+    Set<String> groups = new LinkedHashSet<>(readTexts(d, d.readCount(1)));
+    int a = d.readCount(5);
+    List<Annotation> annotations = new ArrayList<>();
+    for (int i = 0; i < a; i++) {
+      Annotation annotation = readAnnotationEntry(d);
+      if (annotation != null) {
+        annotations.add(annotation);
+      }
+    }
+    d.leave();
+    ServiceDescriptor descriptor;
+    try {
+      descriptor = new ServiceDescriptor(containerId, containerName, host, serviceId, name,
+          parameterNames, parameterTypeNames, returnTypeName, groups, annotations);
+    } catch (RuntimeException e) {
+      throw new MalformedValueException("invalid service descriptor: " + e.getMessage(), e);
+    }
+    try {
+      return d.info.bind(descriptor);
+    } catch (RuntimeException e) {
+      throw new TRADESerializationException(
+          "Cannot bind the service info of " + descriptor.signature() + ": " + e, e);
+    }
+  }
+
+  private static List<String> readTexts(Decoder d, int n) throws MalformedValueException {
+    List<String> texts = new ArrayList<>(n);
+    for (int i = 0; i < n; i++) {
+      texts.add(d.readText());
+    }
+    return texts;
+  }
+
+  /** One length-prefixed annotation, or null if its class is unknown or refused here. */
+  private static Annotation readAnnotationEntry(Decoder d) throws TRADESerializationException {
+    ByteSource in = d.in;
+    int length = in.readInt();
+    if (length < 1 || length > in.remaining()) {
+      throw new MalformedValueException(
+          "annotation entry length " + length + " at offset " + in.at(-4) + ", "
+              + in.remaining() + " bytes left");
+    }
+    int end = in.pos + length;
+    int savedLimit = in.limit;
+    int savedDepth = d.depth();
+    in.limit = end;
+    try {
+      int tag = in.buf[in.pos] & 0xFF;
+      if (tag != Tags.ANNOTATION) {
+        throw new MalformedValueException(
+            String.format("annotation entry holds tag 0x%02X at offset %d", tag, in.at(0)));
+      }
+      Object annotation = d.readValue();
+      if (in.pos != end) {
+        throw new MalformedValueException(
+            "annotation entry has " + (end - in.pos) + " bytes after its value");
+      }
+      return (Annotation) annotation;
+    } catch (MalformedValueException e) {
+      throw e;
+    } catch (TRADESerializationException e) {
+      return null; // not known or not allowed here: skip it, as the descriptor's contract says
+    } finally {
+      in.limit = savedLimit;
+      in.pos = end;
+      d.resetDepth(savedDepth);
+    }
+  }
+}
