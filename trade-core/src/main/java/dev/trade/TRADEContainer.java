@@ -1,5 +1,6 @@
 package dev.trade;
 
+import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.config.Settings;
 import dev.trade.internal.container.ContainerCore;
 import dev.trade.internal.registry.Entry;
@@ -7,6 +8,7 @@ import dev.trade.internal.registry.LocalService;
 import dev.trade.internal.registry.Query;
 import dev.trade.internal.registry.ServiceDescriptor;
 import java.lang.annotation.Annotation;
+import java.net.InetSocketAddress;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collection;
@@ -36,7 +38,17 @@ public final class TRADEContainer implements AutoCloseable {
   private final ContainerCore core;
 
   private TRADEContainer(Settings settings) {
-    this.core = new ContainerCore(settings, null);
+    this.core = new ContainerCore(settings, new InfoBinding() {
+      @Override
+      public ServiceDescriptor describe(Object value) {
+        return value instanceof TRADEServiceInfo ? ((TRADEServiceInfo) value).descriptor() : null;
+      }
+
+      @Override
+      public Object bind(ServiceDescriptor descriptor) {
+        return TRADEContainer.this.bind(descriptor);
+      }
+    });
   }
 
   /** A builder starting from the built-in defaults (no configuration file is read). */
@@ -71,7 +83,7 @@ public final class TRADEContainer implements AutoCloseable {
       throws TRADEException {
     Objects.requireNonNull(provider, "provider == null");
     checkOpen();
-    List<LocalService> services = core.registry().register(provider, normalize(groups));
+    List<LocalService> services = core.register(provider, normalize(groups));
     List<TRADEServiceInfo> infos = new ArrayList<>(services.size());
     for (LocalService s : services) {
       infos.add(bind(s.descriptor()));
@@ -104,7 +116,7 @@ public final class TRADEContainer implements AutoCloseable {
    */
   public void deregister(Object provider) throws TRADEException {
     Objects.requireNonNull(provider, "provider == null");
-    core.registry().deregister(provider);
+    core.deregister(provider);
   }
 
   /**
@@ -144,6 +156,19 @@ public final class TRADEContainer implements AutoCloseable {
     checkOpen();
     TRADEServiceConstraints c = constraints == null ? new TRADEServiceConstraints() : constraints;
     return bindAll(core.registry().find(c.requiredName(), c.toQuery()), annotation);
+  }
+
+  /**
+   * The addresses this container accepts connections on ({@code SERVERIPS}; with port 0 the port
+   * actually chosen), as {@code ip@port}. Empty when it does not accept connections.
+   */
+  public List<String> getServerAddresses() {
+    List<String> result = new ArrayList<>();
+    for (InetSocketAddress a : core.listenAddresses()) {
+      String ip = a.getAddress().getHostAddress();
+      result.add((ip.contains(":") ? "[" + ip + "]" : ip) + "@" + a.getPort());
+    }
+    return result;
   }
 
   /** Deregisters every service of this container and disconnects it. Idempotent. */
@@ -230,9 +255,7 @@ public final class TRADEContainer implements AutoCloseable {
 
     /** Sets every setting in {@code properties}, as {@link #property} does for each. */
     public Builder properties(Properties properties) {
-      for (String key : properties.stringPropertyNames()) {
-        property(key, properties.getProperty(key));
-      }
+      settings = settings.withAll(Objects.requireNonNull(properties, "properties == null"));
       return this;
     }
 
@@ -249,6 +272,11 @@ public final class TRADEContainer implements AutoCloseable {
       return property("COPYDATAFORLOCALINVOKES", Boolean.toString(copy));
     }
 
+    /**
+     * Builds the container and starts its networking when the settings ask for it.
+     *
+     * @throws java.io.UncheckedIOException if a listen address cannot be bound (the message names it)
+     */
     public TRADEContainer build() {
       return new TRADEContainer(settings);
     }

@@ -1,6 +1,8 @@
 package dev.trade.internal.container;
 
+import dev.trade.TRADEBadArgumentsException;
 import dev.trade.TRADEException;
+import dev.trade.TRADEServiceNotFoundException;
 import dev.trade.internal.call.Arguments;
 import dev.trade.internal.call.CallChain;
 import dev.trade.internal.call.CallLink;
@@ -9,11 +11,21 @@ import dev.trade.internal.call.LocalInvoker;
 import dev.trade.internal.call.Returns;
 import dev.trade.internal.call.ServiceCaller;
 import dev.trade.internal.call.ValueCopier;
+import dev.trade.internal.codec.AllowList;
+import dev.trade.internal.codec.Codec;
+import dev.trade.internal.codec.InfoBinding;
+import dev.trade.internal.codec.Limits;
 import dev.trade.internal.config.Settings;
+import dev.trade.internal.net.Network;
 import dev.trade.internal.registry.LocalService;
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
+import dev.trade.internal.registry.Types;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.net.InetSocketAddress;
 import java.util.ArrayList;
+import java.util.Collection;
 import java.util.List;
 import java.util.UUID;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -28,21 +40,27 @@ import java.util.concurrent.atomic.AtomicInteger;
 public final class ContainerCore implements ServiceCaller {
   private static final AtomicInteger INSTANCES = new AtomicInteger();
 
-  private final String id = UUID.randomUUID().toString();
+  private final UUID uuid = UUID.randomUUID();
+  private final String id = uuid.toString();
   private final String name;
   private final String host;
   private final Settings settings;
   private final Registry registry;
   private final CallChain hostChain;
+  private final AllowList allowList;
+  private final Codec codec;
   private final ValueCopier copier;
   private final long defaultTimeoutNanos;
+  private final Network network;
   private volatile boolean closed;
 
   /**
-   * @param copier copies arguments and results of local calls (strict mode), or null to pass
-   *     them as they are
+   * Builds the container and, when the settings ask for networking, starts it.
+   *
+   * @param infos how {@code TRADEServiceInfo} values are described and bound to this container
+   * @throws UncheckedIOException if a listen address cannot be bound (the message names it)
    */
-  public ContainerCore(Settings settings, ValueCopier copier) {
+  public ContainerCore(Settings settings, InfoBinding infos) {
     this.settings = settings;
     this.host = HostName.local();
     int n = INSTANCES.incrementAndGet();
@@ -51,10 +69,88 @@ public final class ContainerCore implements ServiceCaller {
         ? host + "/" + ProcessHandle.current().pid() + (n == 1 ? "" : "#" + n)
         : configured;
     this.registry = new Registry(id, name, host);
-    this.copier = settings.copyDataForLocalInvokes() ? copier : null;
+    this.allowList = AllowList.withDefaults();
+    for (String pattern : settings.serializationAllowList()) {
+      allowList.add(pattern);
+    }
+    Limits limits = new Limits(settings.maxFrameSize(), Limits.DEFAULT.maxDepth(),
+        Limits.DEFAULT.maxElements(), Limits.DEFAULT.maxStackFrames());
+    this.codec = new Codec(allowList, limits, infos);
+    this.copier = settings.copyDataForLocalInvokes() ? codec::copy : null;
     this.defaultTimeoutNanos = settings.callTimeout().toNanos();
     List<CallLink> hostLinks = new ArrayList<>();
     this.hostChain = new CallChain(hostLinks, new LocalInvoker(registry));
+    this.network = networked(settings) ? startNetwork(limits) : null;
+  }
+
+  /** Service tables travel as descriptors and stay descriptors. */
+  private static final InfoBinding DESCRIPTORS = new InfoBinding() {
+    @Override
+    public ServiceDescriptor describe(Object value) {
+      return value instanceof ServiceDescriptor ? (ServiceDescriptor) value : null;
+    }
+
+    @Override
+    public Object bind(ServiceDescriptor descriptor) {
+      return descriptor;
+    }
+  };
+
+  private static boolean networked(Settings s) {
+    return s.startAcceptingConnections() || !s.connectContainers().isEmpty()
+        || s.startDiscovery() || s.startBroadcast();
+  }
+
+  private Network startNetwork(Limits limits) {
+    Codec tables = new Codec(allowList, limits, DESCRIPTORS);
+    Network n = new Network(settings, uuid, name, host, registry, codec, tables, new Network.Host() {
+      @Override
+      public LocalService local(long serviceId) {
+        return registry.local(serviceId);
+      }
+
+      @Override
+      public Object invoke(Invocation call) throws TRADEException {
+        return hostChain.call(call);
+      }
+    });
+    try {
+      n.start();
+    } catch (IOException e) {
+      n.close();
+      throw new UncheckedIOException(e);
+    }
+    return n;
+  }
+
+  /**
+   * Registers the provider's services; their parameter and return types' packages join the
+   * deserialization allow-list, so values of those types can arrive.
+   */
+  public List<LocalService> register(Object provider, Collection<String> groups) throws TRADEException {
+    List<LocalService> services = registry.register(provider, groups);
+    for (LocalService s : services) {
+      for (Class<?> p : s.parameterTypes()) {
+        allowList.addPackageOf(p);
+      }
+      allowList.addPackageOf(s.returnType());
+    }
+    return services;
+  }
+
+  /** See {@link Registry#deregister}. */
+  public void deregister(Object provider) throws TRADEServiceNotFoundException {
+    registry.deregister(provider);
+  }
+
+  /** The addresses this container accepts connections on (empty without networking). */
+  public List<InetSocketAddress> listenAddresses() {
+    return network == null ? List.of() : network.listenAddresses();
+  }
+
+  /** Ids of the containers with a direct link to this one. */
+  public List<String> neighbours() {
+    return network == null ? List.of() : network.neighbours();
   }
 
   @Override
@@ -90,7 +186,24 @@ public final class ContainerCore implements ServiceCaller {
     if (d.containerId().equals(id)) {
       return callLocal(d, returnType, normalized, deadline);
     }
-    throw LocalInvoker.unavailable(d, "its container is not connected");
+    if (network == null) {
+      throw LocalInvoker.unavailable(d, "this container has no network");
+    }
+    ClassLoader loader = callerLoader(returnType);
+    Returns.check(d, returnType, Types.resolve(d.returnTypeName(), loader));
+    if (normalized.length != d.parameterTypeNames().size()) {
+      throw new TRADEBadArgumentsException("Service " + d.signature() + " takes "
+          + d.parameterTypeNames().size() + " arguments but got " + normalized.length);
+    }
+    return Returns.convert(d, returnType, network.call(d, normalized, deadline, loader));
+  }
+
+  private static ClassLoader callerLoader(Class<?> returnType) {
+    ClassLoader l = Thread.currentThread().getContextClassLoader();
+    if (l == null) {
+      l = returnType.getClassLoader();
+    }
+    return l != null ? l : ContainerCore.class.getClassLoader();
   }
 
   private <T> T callLocal(ServiceDescriptor d, Class<T> returnType, Object[] args, long deadline)
@@ -104,14 +217,15 @@ public final class ContainerCore implements ServiceCaller {
       return Returns.convert(d, returnType, hostChain.call(new Invocation(d, args, deadline)));
     }
     ClassLoader providerLoader = s.target().getClass().getClassLoader();
+    if (providerLoader == null) {
+      providerLoader = ClassLoader.getSystemClassLoader();
+    }
     Object[] copies = new Object[args.length];
     for (int i = 0; i < args.length; i++) {
       copies[i] = copier.copy(args[i], providerLoader);
     }
     Object result = hostChain.call(new Invocation(d, copies, deadline));
-    ClassLoader callerLoader = Thread.currentThread().getContextClassLoader();
-    return Returns.convert(d, returnType,
-        copier.copy(result, callerLoader != null ? callerLoader : providerLoader));
+    return Returns.convert(d, returnType, copier.copy(result, callerLoader(returnType)));
   }
 
   /** Deregisters everything and stops; idempotent. */
@@ -119,6 +233,9 @@ public final class ContainerCore implements ServiceCaller {
     if (!closed) {
       closed = true;
       registry.deregisterAll();
+      if (network != null) {
+        network.close();
+      }
     }
   }
 }

@@ -52,6 +52,8 @@ public final class Registry {
   private final Map<Object, List<LocalService>> byProvider = new IdentityHashMap<>();
   // Guarded by this: every known entry by container id, then service id.
   private final Map<String, Map<Long, Entry>> tables = new HashMap<>();
+  // Guarded by this: the newest version applied per container (this one's own included).
+  private final Map<String, Long> versions = new HashMap<>();
   private long localVersion;
   private volatile Snapshot snapshot = Snapshot.EMPTY;
 
@@ -143,6 +145,153 @@ public final class Registry {
     }
     localVersion++;
     publish(List.of(), removed);
+  }
+
+  /** This container's own table and its version, consistent with each other. */
+  public synchronized Table localTable() {
+    List<ServiceDescriptor> services = new ArrayList<>();
+    tables.get(containerId).values().forEach(e -> services.add(e.descriptor()));
+    return new Table(containerId, localVersion, services);
+  }
+
+  /** The version of this container's own table (changes with every register and deregister). */
+  public synchronized long localVersion() {
+    return localVersion;
+  }
+
+  /** Every other container's table, to hand to a new neighbour. */
+  public synchronized List<Table> remoteTables() {
+    List<Table> result = new ArrayList<>();
+    for (Map.Entry<String, Map<Long, Entry>> t : tables.entrySet()) {
+      if (!t.getKey().equals(containerId)) {
+        List<ServiceDescriptor> services = new ArrayList<>();
+        t.getValue().values().forEach(e -> services.add(e.descriptor()));
+        result.add(new Table(t.getKey(), versions.getOrDefault(t.getKey(), 0L), services));
+      }
+    }
+    return result;
+  }
+
+  /**
+   * Replaces another container's whole table when {@code table} is newer than what is known.
+   *
+   * @return true when applied (the caller floods it on), false when stale
+   */
+  public synchronized boolean applyTable(Table table, int distance) {
+    String owner = table.containerId();
+    if (owner.equals(containerId)) {
+      return false;
+    }
+    Long known = versions.get(owner);
+    if (known != null && known >= table.version()) {
+      return false;
+    }
+    versions.put(owner, table.version());
+    Map<Long, Entry> old = tables.getOrDefault(owner, Map.of());
+    Map<Long, Entry> fresh = new LinkedHashMap<>();
+    List<Entry> added = new ArrayList<>();
+    for (ServiceDescriptor d : table.services()) {
+      Entry e = old.get(d.serviceId());
+      if (e == null) {
+        e = new Entry(d, distance, null);
+        added.add(e);
+      }
+      fresh.put(d.serviceId(), e.withDistance(distance));
+    }
+    List<Entry> removed = new ArrayList<>();
+    for (Map.Entry<Long, Entry> e : old.entrySet()) {
+      if (!fresh.containsKey(e.getKey())) {
+        removed.add(e.getValue());
+      }
+    }
+    tables.put(owner, fresh);
+    publish(added, removed);
+    return true;
+  }
+
+  /** What became of a delta. */
+  public enum DeltaResult { APPLIED, STALE, GAP }
+
+  /**
+   * Applies another container's incremental change: only the next version in sequence applies; an
+   * older one is stale, a newer one leaves a gap (the caller asks for the full table).
+   */
+  public synchronized DeltaResult applyDelta(String owner, long version, List<ServiceDescriptor> add,
+      List<Long> remove, int distance) {
+    if (owner.equals(containerId)) {
+      return DeltaResult.STALE;
+    }
+    Long known = versions.get(owner);
+    if (known != null && version <= known) {
+      return DeltaResult.STALE;
+    }
+    if (known == null || version != known + 1) {
+      return DeltaResult.GAP;
+    }
+    versions.put(owner, version);
+    Map<Long, Entry> table = tables.computeIfAbsent(owner, k -> new LinkedHashMap<>());
+    List<Entry> added = new ArrayList<>();
+    for (ServiceDescriptor d : add) {
+      Entry e = new Entry(d, distance, null);
+      table.put(d.serviceId(), e);
+      added.add(e);
+    }
+    List<Entry> removed = new ArrayList<>();
+    for (Long id : remove) {
+      Entry e = table.remove(id);
+      if (e != null) {
+        removed.add(e);
+      }
+    }
+    publish(added, removed);
+    return DeltaResult.APPLIED;
+  }
+
+  /** Forgets a container that left or became unreachable; its services go away everywhere here. */
+  public synchronized void removeContainer(String owner) {
+    if (owner.equals(containerId)) {
+      return;
+    }
+    versions.remove(owner);
+    Map<Long, Entry> table = tables.remove(owner);
+    if (table != null && !table.isEmpty()) {
+      publish(List.of(), new ArrayList<>(table.values()));
+    }
+  }
+
+  /** Containers whose tables are known here, this one excluded. */
+  public synchronized List<String> remoteContainers() {
+    List<String> result = new ArrayList<>(tables.keySet());
+    result.remove(containerId);
+    return result;
+  }
+
+  /** Updates how far each container is (reorders lookups; no joined/left events). */
+  public synchronized void updateDistances(Map<String, Integer> distances) {
+    boolean changed = false;
+    for (Map.Entry<String, Map<Long, Entry>> t : tables.entrySet()) {
+      Integer d = distances.get(t.getKey());
+      if (d == null || t.getKey().equals(containerId)) {
+        continue;
+      }
+      for (Map.Entry<Long, Entry> e : t.getValue().entrySet()) {
+        Entry moved = e.getValue().withDistance(d);
+        if (moved != e.getValue()) {
+          e.setValue(moved);
+          changed = true;
+        }
+      }
+    }
+    if (changed) {
+      snapshot = Snapshot.of(tables);
+    }
+  }
+
+  /** A container's table of services at a version. */
+  public record Table(String containerId, long version, List<ServiceDescriptor> services) {
+    public Table {
+      services = List.copyOf(services);
+    }
   }
 
   /** The active local service with this id, or null. Lock-free. */

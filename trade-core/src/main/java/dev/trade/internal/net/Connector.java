@@ -1,0 +1,205 @@
+package dev.trade.internal.net;
+
+import java.io.IOException;
+import java.lang.System.Logger;
+import java.lang.System.Logger.Level;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.net.SocketException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * Makes authenticated links: accepts connections on the listen addresses and connects to peers,
+ * running the {@link Handshake} on each socket before anything else is read. Configured peers are
+ * retried with exponential backoff and reconnected after a loss.
+ *
+ * <p>This class is safe for concurrent use.
+ */
+final class Connector {
+  private static final Logger LOG = System.getLogger("dev.trade.net");
+  private static final long MIN_BACKOFF_MS = 50;
+  private static final long MAX_BACKOFF_MS = 2_000;
+
+  /** Receives every link whose handshake succeeded. */
+  interface Sink {
+    void linked(Socket socket, Handshake.Peer peer, boolean initiatedHere);
+
+    /** Whether a live link to the container last reached at this address exists. */
+    boolean isLinked(InetSocketAddress address);
+  }
+
+  private final Handshake handshake;
+  private final int connectTimeoutMs;
+  private final ExecutorService workers;
+  private final ScheduledExecutorService timer;
+  private final Sink sink;
+  private final List<ServerSocket> servers = new CopyOnWriteArrayList<>();
+  private final Map<InetSocketAddress, Long> backoff = new ConcurrentHashMap<>();
+  private volatile boolean closed;
+
+  Connector(Handshake handshake, int connectTimeoutMs, ExecutorService workers,
+      ScheduledExecutorService timer, Sink sink) {
+    this.handshake = handshake;
+    this.connectTimeoutMs = connectTimeoutMs;
+    this.workers = workers;
+    this.timer = timer;
+    this.sink = sink;
+  }
+
+  /** Binds a listening socket (port 0: any free port) and starts accepting; returns its address. */
+  InetSocketAddress listen(InetSocketAddress address) throws IOException {
+    ServerSocket server = new ServerSocket();
+    server.setReuseAddress(true);
+    server.bind(address, 64);
+    servers.add(server);
+    Thread t = new Thread(() -> acceptLoop(server), "trade-accept-" + server.getLocalPort());
+    t.setDaemon(true);
+    t.start();
+    InetSocketAddress bound = (InetSocketAddress) server.getLocalSocketAddress();
+    LOG.log(Level.DEBUG, "listening on {0}", bound);
+    return bound;
+  }
+
+  /** The concrete addresses we listen on (wildcards expanded by the caller). */
+  List<InetSocketAddress> listening() {
+    List<InetSocketAddress> result = new ArrayList<>();
+    for (ServerSocket s : servers) {
+      result.add((InetSocketAddress) s.getLocalSocketAddress());
+    }
+    return result;
+  }
+
+  /** Keeps a link to {@code address}: connects now, retries with backoff, reconnects after loss. */
+  void keepConnected(InetSocketAddress address) {
+    backoff.put(address, MIN_BACKOFF_MS);
+    timer.execute(() -> attempt(address));
+  }
+
+  /** Connects once to an address heard from discovery (no retries: it announces again). */
+  void connectOnce(InetSocketAddress address) {
+    workers.execute(() -> {
+      try {
+        connect(address);
+      } catch (IOException | Handshake.Failure e) {
+        LOG.log(Level.DEBUG, "cannot connect to announced {0}: {1}", address, e.getMessage());
+      }
+    });
+  }
+
+  /** Retries every kept address now (a link was lost). */
+  void retryNow() {
+    for (InetSocketAddress a : backoff.keySet()) {
+      backoff.put(a, MIN_BACKOFF_MS);
+      timer.execute(() -> attempt(a));
+    }
+  }
+
+  private void attempt(InetSocketAddress address) {
+    if (closed) {
+      return;
+    }
+    long delay = backoff.getOrDefault(address, MIN_BACKOFF_MS);
+    if (sink.isLinked(address)) {
+      // Linked already (maybe the peer connected to us): look again later, cheaply.
+      timer.schedule(() -> attempt(address), MAX_BACKOFF_MS, TimeUnit.MILLISECONDS);
+      return;
+    }
+    workers.execute(() -> {
+      try {
+        connect(address);
+        backoff.put(address, MIN_BACKOFF_MS);
+        schedule(address, MAX_BACKOFF_MS);
+      } catch (IOException | Handshake.Failure e) {
+        LOG.log(delay >= MAX_BACKOFF_MS ? Level.INFO : Level.DEBUG,
+            "cannot connect to {0}: {1}; retrying in {2} ms", address, e.getMessage(), delay);
+        backoff.put(address, Math.min(MAX_BACKOFF_MS, delay * 2));
+        schedule(address, delay);
+      }
+    });
+  }
+
+  private void schedule(InetSocketAddress address, long delayMs) {
+    if (!closed) {
+      timer.schedule(() -> attempt(address), delayMs, TimeUnit.MILLISECONDS);
+    }
+  }
+
+  private void connect(InetSocketAddress address) throws IOException, Handshake.Failure {
+    Socket socket = new Socket();
+    try {
+      socket.connect(address, connectTimeoutMs);
+      handshakeAndHandOver(socket, true);
+    } catch (IOException | Handshake.Failure | RuntimeException e) {
+      socket.close();
+      throw e;
+    }
+  }
+
+  private void acceptLoop(ServerSocket server) {
+    while (!closed) {
+      Socket socket;
+      try {
+        socket = server.accept();
+      } catch (SocketException e) {
+        break; // closed
+      } catch (IOException e) {
+        LOG.log(Level.WARNING, "accept failed on {0}: {1}", server.getLocalSocketAddress(), e);
+        continue;
+      }
+      workers.execute(() -> {
+        try {
+          handshakeAndHandOver(socket, false);
+        } catch (IOException | Handshake.Failure | RuntimeException e) {
+          LOG.log(Level.WARNING, "refused connection from {0}: {1}",
+              socket.getRemoteSocketAddress(), e.getMessage());
+          try {
+            socket.close();
+          } catch (IOException ignored) {
+            // Already failing; nothing more to tell.
+          }
+        }
+      });
+    }
+  }
+
+  private void handshakeAndHandOver(Socket socket, boolean initiatedHere)
+      throws IOException, Handshake.Failure {
+    socket.setTcpNoDelay(true);
+    socket.setKeepAlive(true);
+    socket.setSoTimeout(connectTimeoutMs);
+    Handshake.Peer peer;
+    try {
+      peer = handshake.run(socket.getInputStream(), socket.getOutputStream());
+    } catch (Handshake.Failure e) {
+      LOG.log(Level.WARNING, "handshake with {0} failed: {1}", socket.getRemoteSocketAddress(),
+          e.getMessage());
+      throw e;
+    }
+    socket.setSoTimeout(0); // from now on heartbeats tell a silent peer
+    sink.linked(socket, peer, initiatedHere);
+  }
+
+  static boolean isWildcard(InetAddress a) {
+    return a.isAnyLocalAddress();
+  }
+
+  void close() {
+    closed = true;
+    for (ServerSocket s : servers) {
+      try {
+        s.close();
+      } catch (IOException ignored) {
+        // Best effort at shutdown.
+      }
+    }
+  }
+}

@@ -1,0 +1,89 @@
+package dev.trade.internal.net;
+
+import dev.trade.internal.codec.ByteSink;
+import dev.trade.internal.codec.ByteSource;
+import dev.trade.internal.codec.MalformedValueException;
+import java.util.UUID;
+
+/**
+ * Building and parsing the fixed parts of frames: the frame header, and the routing header that
+ * CALL and REPLY frames carry so that containers without a direct link can forward them unread.
+ * Stateless.
+ */
+final class Frames {
+  /** Routing header: source (16), destination (16), hops left (1). */
+  static final int ROUTING = 33;
+
+  private Frames() {}
+
+  /** A sink with room for the frame header, which {@link #finish} fills in. */
+  static ByteSink start(int type, int expectedPayload) {
+    ByteSink sink = new ByteSink(Wire.HEADER + expectedPayload);
+    sink.writeInt(0);
+    sink.writeByte(Wire.VERSION);
+    sink.writeByte(type);
+    return sink;
+  }
+
+  /** The finished frame (length filled in). */
+  static byte[] finish(ByteSink sink) {
+    sink.putInt(0, sink.size() - 4);
+    return sink.toByteArray();
+  }
+
+  static void writeUuid(ByteSink out, UUID id) {
+    out.writeLong(id.getMostSignificantBits());
+    out.writeLong(id.getLeastSignificantBits());
+  }
+
+  static UUID readUuid(ByteSource in) throws MalformedValueException {
+    return new UUID(in.readLong(), in.readLong());
+  }
+
+  static void writeRouting(ByteSink out, UUID source, UUID destination, int hops) {
+    writeUuid(out, source);
+    writeUuid(out, destination);
+    out.writeByte(hops);
+  }
+
+  /** The payload's destination (routing header at its start). */
+  static UUID destination(byte[] payload) {
+    return new UUID(getLong(payload, 16), getLong(payload, 24));
+  }
+
+  static UUID source(byte[] payload) {
+    return new UUID(getLong(payload, 0), getLong(payload, 8));
+  }
+
+  /** The request id of a CALL or REPLY payload (right after the routing header). */
+  static long requestId(byte[] payload) {
+    return getLong(payload, ROUTING);
+  }
+
+  static int hops(byte[] payload) {
+    return payload[32] & 0xff;
+  }
+
+  /** A frame of {@code type} carrying {@code payload} with one hop fewer left. */
+  static byte[] forwarded(int type, byte[] payload) {
+    byte[] frame = new byte[Wire.HEADER + payload.length];
+    int length = frame.length - 4;
+    frame[0] = (byte) (length >>> 24);
+    frame[1] = (byte) (length >>> 16);
+    frame[2] = (byte) (length >>> 8);
+    frame[3] = (byte) length;
+    frame[4] = (byte) Wire.VERSION;
+    frame[5] = (byte) type;
+    System.arraycopy(payload, 0, frame, Wire.HEADER, payload.length);
+    frame[Wire.HEADER + 32] = (byte) (hops(payload) - 1);
+    return frame;
+  }
+
+  private static long getLong(byte[] b, int at) {
+    long v = 0;
+    for (int i = 0; i < 8; i++) {
+      v = (v << 8) | (b[at + i] & 0xff);
+    }
+    return v;
+  }
+}

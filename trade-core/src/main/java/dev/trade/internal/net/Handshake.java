@@ -1,0 +1,248 @@
+package dev.trade.internal.net;
+
+import java.io.ByteArrayOutputStream;
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.io.EOFException;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.nio.ByteBuffer;
+import java.nio.charset.StandardCharsets;
+import java.security.GeneralSecurityException;
+import java.security.MessageDigest;
+import java.security.SecureRandom;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.UUID;
+import javax.crypto.Mac;
+import javax.crypto.spec.SecretKeySpec;
+
+/**
+ * The connection handshake: both sides send HELLO (identity and a fresh nonce), then AUTH, an HMAC
+ * over both nonces and identities keyed by the shared credentials, proving each holds them without
+ * the secret crossing the wire. Until the peer's AUTH checks out nothing but these two small
+ * fixed-layout frames is read; no value decoder ever sees unauthenticated bytes.
+ *
+ * <p>Stateless apart from the identity given at construction; thread-safe.
+ */
+final class Handshake {
+  private static final byte[] MAGIC = {'T', 'R', 'D', 'E'};
+  private static final int NONCE = 32;
+  private static final int MAX_STRING = 255;
+  private static final int MAX_ADDRESSES = 16;
+  private static final SecureRandom RANDOM = new SecureRandom();
+
+  /** Who we are, as told to peers. */
+  record Identity(String systemId, UUID containerId, String name, String host, List<String> addresses) {}
+
+  /** Who the peer proved to be. */
+  record Peer(UUID containerId, String name, String host, List<String> addresses) {}
+
+  /** The handshake failed; {@code reason} is one of the {@code Wire.REFUSE_*} codes or 0 (I/O). */
+  static final class Failure extends Exception {
+    private static final long serialVersionUID = 1L;
+    final int reason;
+
+    Failure(int reason, String message) {
+      super(message);
+      this.reason = reason;
+    }
+  }
+
+  private final Identity self;
+  private final byte[] key;
+
+  Handshake(Identity self, String credentials) {
+    this.self = self;
+    this.key = deriveKey(self.systemId(), credentials);
+  }
+
+  /**
+   * Runs the handshake over a connected stream pair; the caller sets a read timeout first.
+   *
+   * @throws Failure with the reason (also sent to the peer as REFUSE when it is ours to tell)
+   * @throws IOException when the connection fails or the peer refused us
+   */
+  Peer run(InputStream rawIn, OutputStream rawOut) throws IOException, Failure {
+    DataInputStream in = new DataInputStream(rawIn);
+    DataOutputStream out = new DataOutputStream(rawOut);
+    byte[] nonce = new byte[NONCE];
+    RANDOM.nextBytes(nonce);
+    writeFrame(out, Wire.HELLO, hello(nonce));
+
+    ByteBuffer hello = readFrame(in, Wire.HELLO);
+    Peer peer;
+    byte[] peerNonce = new byte[NONCE];
+    String peerSystem;
+    try {
+      byte[] magic = new byte[4];
+      hello.get(magic);
+      if (!MessageDigest.isEqual(magic, MAGIC)) {
+        throw refuse(out, Wire.REFUSE_MALFORMED, "not a TRADE container (bad magic)");
+      }
+      int version = hello.get() & 0xff;
+      if (version != Wire.VERSION) {
+        throw refuse(out, Wire.REFUSE_VERSION, "protocol version " + version + ", we speak " + Wire.VERSION);
+      }
+      peerSystem = string(hello);
+      UUID id = new UUID(hello.getLong(), hello.getLong());
+      String name = string(hello);
+      String host = string(hello);
+      int count = hello.get() & 0xff;
+      if (count > MAX_ADDRESSES) {
+        throw refuse(out, Wire.REFUSE_MALFORMED, "too many addresses: " + count);
+      }
+      List<String> addresses = new ArrayList<>(count);
+      for (int i = 0; i < count; i++) {
+        addresses.add(string(hello));
+      }
+      hello.get(peerNonce);
+      peer = new Peer(id, name, host, addresses);
+    } catch (RuntimeException e) { // BufferUnderflow, bad UTF-8 length...
+      throw refuse(out, Wire.REFUSE_MALFORMED, "malformed HELLO: " + e);
+    }
+    if (!peerSystem.equals(self.systemId())) {
+      throw refuse(out, Wire.REFUSE_SYSTEM, "other system id '" + peerSystem + "' (ours is '"
+          + self.systemId() + "')");
+    }
+    if (peer.containerId().equals(self.containerId())) {
+      throw refuse(out, Wire.REFUSE_SELF, "connected to itself");
+    }
+    writeFrame(out, Wire.AUTH, mac(nonce, peerNonce, self.containerId(), peer.containerId()));
+    ByteBuffer auth = readFrame(in, Wire.AUTH);
+    byte[] proof = new byte[auth.remaining()];
+    auth.get(proof);
+    byte[] expected = mac(peerNonce, nonce, peer.containerId(), self.containerId());
+    if (!MessageDigest.isEqual(proof, expected)) {
+      throw refuse(out, Wire.REFUSE_CREDENTIALS, "authentication failed: wrong CREDENTIALS on one side");
+    }
+    return peer;
+  }
+
+  private byte[] hello(byte[] nonce) throws IOException {
+    ByteArrayOutputStream bytes = new ByteArrayOutputStream(256);
+    DataOutputStream out = new DataOutputStream(bytes);
+    out.write(MAGIC);
+    out.writeByte(Wire.VERSION);
+    writeString(out, self.systemId());
+    out.writeLong(self.containerId().getMostSignificantBits());
+    out.writeLong(self.containerId().getLeastSignificantBits());
+    writeString(out, self.name());
+    writeString(out, self.host());
+    List<String> addresses = self.addresses().subList(0, Math.min(MAX_ADDRESSES, self.addresses().size()));
+    out.writeByte(addresses.size());
+    for (String a : addresses) {
+      writeString(out, a);
+    }
+    out.write(nonce);
+    return bytes.toByteArray();
+  }
+
+  private byte[] mac(byte[] senderNonce, byte[] receiverNonce, UUID sender, UUID receiver) {
+    try {
+      Mac mac = Mac.getInstance("HmacSHA256");
+      mac.init(new SecretKeySpec(key, "HmacSHA256"));
+      mac.update("TRADE-auth-v1".getBytes(StandardCharsets.US_ASCII));
+      mac.update(self.systemId().getBytes(StandardCharsets.UTF_8));
+      mac.update(uuid(sender));
+      mac.update(uuid(receiver));
+      mac.update(senderNonce);
+      mac.update(receiverNonce);
+      return mac.doFinal();
+    } catch (GeneralSecurityException e) {
+      throw new IllegalStateException("HmacSHA256 is part of every JDK", e);
+    }
+  }
+
+  /** {@code SHA-256("TRADE-credentials-v1" 0x00 systemId 0x00 credentials)}. */
+  static byte[] deriveKey(String systemId, String credentials) {
+    try {
+      MessageDigest sha = MessageDigest.getInstance("SHA-256");
+      sha.update("TRADE-credentials-v1".getBytes(StandardCharsets.US_ASCII));
+      sha.update((byte) 0);
+      sha.update(systemId.getBytes(StandardCharsets.UTF_8));
+      sha.update((byte) 0);
+      sha.update(credentials.getBytes(StandardCharsets.UTF_8));
+      return sha.digest();
+    } catch (GeneralSecurityException e) {
+      throw new IllegalStateException("SHA-256 is part of every JDK", e);
+    }
+  }
+
+  private static byte[] uuid(UUID id) {
+    return ByteBuffer.allocate(16).putLong(id.getMostSignificantBits())
+        .putLong(id.getLeastSignificantBits()).array();
+  }
+
+  private static Failure refuse(DataOutputStream out, int reason, String message) {
+    try {
+      byte[] text = message.getBytes(StandardCharsets.UTF_8);
+      int len = Math.min(text.length, 1000);
+      ByteBuffer b = ByteBuffer.allocate(3 + len);
+      b.put((byte) reason).putShort((short) len).put(text, 0, len);
+      writeFrame(out, Wire.REFUSE, b.array());
+    } catch (IOException ignored) {
+      // The peer is gone already; our own log line still says why.
+    }
+    return new Failure(reason, message);
+  }
+
+  private static void writeFrame(DataOutputStream out, int type, byte[] payload) throws IOException {
+    out.writeInt(2 + payload.length);
+    out.writeByte(Wire.VERSION);
+    out.writeByte(type);
+    out.write(payload);
+    out.flush();
+  }
+
+  /** Reads one small frame of the expected type; a REFUSE from the peer becomes an IOException. */
+  private static ByteBuffer readFrame(DataInputStream in, int expected) throws IOException, Failure {
+    int length;
+    try {
+      length = in.readInt();
+    } catch (EOFException e) {
+      throw new IOException("peer closed the connection during the handshake");
+    }
+    if (length < 2 || length > Wire.MAX_HANDSHAKE_FRAME) {
+      throw new Failure(Wire.REFUSE_MALFORMED, "bad handshake frame length " + length);
+    }
+    byte[] frame = new byte[length];
+    in.readFully(frame);
+    ByteBuffer b = ByteBuffer.wrap(frame);
+    int version = b.get() & 0xff;
+    int type = b.get() & 0xff;
+    if (type == Wire.REFUSE && b.remaining() >= 3) {
+      int reason = b.get() & 0xff;
+      int len = Math.min(b.getShort() & 0xffff, b.remaining());
+      byte[] text = new byte[len];
+      b.get(text);
+      throw new IOException("refused by peer (reason " + reason + "): "
+          + new String(text, StandardCharsets.UTF_8));
+    }
+    if (version != Wire.VERSION && type == Wire.HELLO) {
+      // Let the HELLO parser report the version mismatch with both numbers.
+      return b.position(2);
+    }
+    if (type != expected) {
+      throw new Failure(Wire.REFUSE_MALFORMED, "expected handshake frame " + expected + ", got " + type);
+    }
+    return b;
+  }
+
+  private static void writeString(DataOutputStream out, String s) throws IOException {
+    byte[] b = s.getBytes(StandardCharsets.UTF_8);
+    if (b.length > MAX_STRING) {
+      throw new IllegalArgumentException("too long for a handshake field (" + b.length + " bytes): " + s);
+    }
+    out.writeByte(b.length);
+    out.write(b);
+  }
+
+  private static String string(ByteBuffer b) {
+    int len = b.get() & 0xff;
+    byte[] bytes = new byte[len];
+    b.get(bytes);
+    return new String(bytes, StandardCharsets.UTF_8);
+  }
+}

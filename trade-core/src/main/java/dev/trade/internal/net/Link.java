@@ -1,0 +1,167 @@
+package dev.trade.internal.net;
+
+import java.io.BufferedInputStream;
+import java.io.BufferedOutputStream;
+import java.io.DataInputStream;
+import java.io.EOFException;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.net.Socket;
+import java.util.ArrayDeque;
+import java.util.UUID;
+import java.util.concurrent.atomic.AtomicBoolean;
+
+/**
+ * One authenticated connection to a neighbouring container.
+ *
+ * <p><b>Writing</b> combines frames: a sender that finds the socket idle writes its frame itself
+ * (no thread hand-off on the latency path); senders that arrive while a write is in progress only
+ * queue their frame, and the writing thread drains the queue before it flushes, so concurrent calls
+ * share system calls. <b>Reading</b> happens on one daemon thread per link, which hands each frame
+ * to the {@link Handler}.
+ *
+ * <p>This class is safe for concurrent use.
+ */
+final class Link {
+  /** Receives what a link reads; called on the link's reader thread. */
+  interface Handler {
+    void frame(Link link, int type, byte[] payload) throws IOException;
+
+    void closed(Link link, String reason);
+  }
+
+  final UUID peerId;
+  final String peerName;
+  final boolean initiatedHere;
+  private final Socket socket;
+  private final DataInputStream in;
+  private final OutputStream out;
+  private final int maxFrame;
+  private final ArrayDeque<byte[]> queue = new ArrayDeque<>();
+  private final AtomicBoolean closed = new AtomicBoolean();
+  // Guarded by queue.
+  private boolean writing;
+  volatile long lastReceived = System.nanoTime();
+  volatile long lastSent = System.nanoTime();
+
+  Link(Socket socket, Handshake.Peer peer, boolean initiatedHere, int maxFrame) throws IOException {
+    this.socket = socket;
+    this.peerId = peer.containerId();
+    this.peerName = peer.name();
+    this.initiatedHere = initiatedHere;
+    this.maxFrame = maxFrame;
+    this.in = new DataInputStream(new BufferedInputStream(socket.getInputStream(), 64 * 1024));
+    this.out = new BufferedOutputStream(socket.getOutputStream(), 64 * 1024);
+  }
+
+  /** Starts the reader thread. */
+  void start(Handler handler) {
+    Thread t = new Thread(() -> readLoop(handler), "trade-link-" + peerName);
+    t.setDaemon(true);
+    t.start();
+  }
+
+  /**
+   * Sends one complete frame (header included). Returns once the frame is written or handed to the
+   * thread that is writing.
+   *
+   * @throws IOException when the link is closed or the write fails (the link is then closed)
+   */
+  void send(byte[] frame) throws IOException {
+    synchronized (queue) {
+      if (closed.get()) {
+        throw new IOException("link to " + peerName + " is closed");
+      }
+      if (writing) {
+        queue.add(frame);
+        return;
+      }
+      writing = true;
+    }
+    byte[] next = frame;
+    try {
+      while (true) {
+        out.write(next);
+        synchronized (queue) {
+          next = queue.poll();
+        }
+        if (next != null) {
+          continue;
+        }
+        out.flush();
+        lastSent = System.nanoTime();
+        synchronized (queue) {
+          // Frames queued during the flush are ours to write too.
+          next = queue.poll();
+          if (next == null) {
+            writing = false;
+            return;
+          }
+        }
+      }
+    } catch (IOException e) {
+      synchronized (queue) {
+        writing = false;
+        queue.clear();
+      }
+      close("write failed: " + e.getMessage());
+      throw e;
+    }
+  }
+
+  private void readLoop(Handler handler) {
+    String reason = "closed";
+    try {
+      while (!closed.get()) {
+        int length;
+        try {
+          length = in.readInt();
+        } catch (EOFException e) {
+          reason = "connection closed by " + peerName;
+          break;
+        }
+        if (length < 2 || length > maxFrame) {
+          reason = "malformed frame from " + peerName + ": length " + length
+              + " (limit MAXFRAMESIZE=" + maxFrame + ")";
+          break;
+        }
+        int version = in.readUnsignedByte();
+        int type = in.readUnsignedByte();
+        if (version != Wire.VERSION) {
+          reason = "frame of protocol version " + version + " from " + peerName;
+          break;
+        }
+        byte[] payload = new byte[length - 2];
+        in.readFully(payload);
+        lastReceived = System.nanoTime();
+        handler.frame(this, type, payload);
+      }
+    } catch (IOException e) {
+      reason = closed.get() ? "closed" : "connection to " + peerName + " lost: " + e.getMessage();
+    } catch (RuntimeException e) {
+      reason = "malformed frame from " + peerName + ": " + e;
+    }
+    close(reason);
+    handler.closed(this, reason);
+  }
+
+  boolean isClosed() {
+    return closed.get();
+  }
+
+  /** Closes the socket (which also ends the reader thread); idempotent. */
+  void close(String reason) {
+    if (closed.compareAndSet(false, true)) {
+      try {
+        socket.close();
+      } catch (IOException ignored) {
+        // Closing is best effort; the reader notices either way.
+      }
+    }
+  }
+
+  @Override
+  public String toString() {
+    return "Link[" + peerName + " " + peerId + (initiatedHere ? " out" : " in") + "]";
+  }
+}

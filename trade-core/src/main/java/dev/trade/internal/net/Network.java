@@ -1,0 +1,306 @@
+package dev.trade.internal.net;
+
+import dev.trade.TRADEException;
+import dev.trade.internal.call.Invocation;
+import dev.trade.internal.codec.Codec;
+import dev.trade.internal.config.PeerAddress;
+import dev.trade.internal.config.Settings;
+import dev.trade.internal.registry.LocalService;
+import dev.trade.internal.registry.Registry;
+import dev.trade.internal.registry.ServiceDescriptor;
+import java.io.IOException;
+import java.lang.System.Logger;
+import java.lang.System.Logger.Level;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.UUID;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ThreadFactory;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
+
+/**
+ * A container's networking: links to neighbours, replication of service tables and link states,
+ * routing, remote calls and failure detection.
+ *
+ * <p>All state changes (links up and down, tables, link states) run on one control thread, in
+ * order; calls and replies take the fast path through the link reader threads and an executor.
+ * This class is safe for concurrent use.
+ */
+public final class Network implements AutoCloseable {
+  private static final Logger LOG = System.getLogger("dev.trade.net");
+
+  /** The providing side of the container: its services and its host chain. */
+  public interface Host {
+    LocalService local(long serviceId);
+
+    Object invoke(Invocation call) throws TRADEException;
+  }
+
+  private final Settings settings;
+  private final UUID self;
+  private final String name;
+  private final Registry registry;
+  private final ExecutorService control;
+  private final ScheduledExecutorService timer;
+  private final ExecutorService workers;
+  private final Connector connector;
+  private final RemoteCalls calls;
+  private final Replication replication;
+  private final Map<UUID, Link> links = new ConcurrentHashMap<>();
+  private final Map<InetSocketAddress, UUID> dialled = new ConcurrentHashMap<>();
+  private volatile boolean closed;
+
+  /**
+   * @param codec the codec for call values (service infos bind to this container)
+   * @param tableCodec a codec whose service-info binding is the descriptor itself
+   */
+  public Network(Settings settings, UUID self, String name, String host, Registry registry,
+      Codec codec, Codec tableCodec, Host provider) {
+    this.settings = settings;
+    this.self = self;
+    this.name = name;
+    this.registry = registry;
+    this.control = Executors.newSingleThreadExecutor(daemon("trade-control-" + name));
+    this.timer = Executors.newSingleThreadScheduledExecutor(daemon("trade-timer-" + name));
+    this.workers = Executors.newCachedThreadPool(daemon("trade-worker-" + name));
+    this.calls = new RemoteCalls(self, codec, this::nextHop, new RemoteCalls.Host() {
+      @Override
+      public LocalService local(long serviceId) {
+        return provider.local(serviceId);
+      }
+
+      @Override
+      public Object invoke(Invocation call) throws TRADEException {
+        return provider.invoke(call);
+      }
+    }, workers);
+    this.replication = new Replication(self, registry, tableCodec, links, calls);
+    Handshake handshake = new Handshake(new Handshake.Identity(settings.tradeSysId(), self, name,
+        host, List.of()), settings.credentials());
+    this.connector = new Connector(handshake, (int) settings.clientSocketTimeout().toMillis(),
+        workers, timer, new Connector.Sink() {
+          @Override
+          public void linked(Socket socket, Handshake.Peer peer, boolean initiatedHere) {
+            onLinked(socket, peer, initiatedHere);
+          }
+
+          @Override
+          public boolean isLinked(InetSocketAddress address) {
+            UUID peer = dialled.get(address);
+            return peer != null && links.containsKey(peer);
+          }
+        });
+    registry.addListener((added, removed) -> replication.localChanged(added, removed, control));
+  }
+
+  /**
+   * Starts listening (when configured) and connecting to the configured peers.
+   *
+   * @throws IOException if a listen address cannot be bound (the message names it)
+   */
+  public void start() throws IOException {
+    if (settings.startAcceptingConnections()) {
+      List<PeerAddress> listen = settings.serverAddresses().isEmpty()
+          ? List.of(new PeerAddress("127.0.0.1", 0)) : settings.serverAddresses();
+      for (PeerAddress a : listen) {
+        try {
+          connector.listen(new InetSocketAddress(a.host(), a.port()));
+        } catch (IOException e) {
+          throw new IOException("cannot listen on SERVERIPS address " + a + ": " + e.getMessage(), e);
+        }
+      }
+    }
+    for (PeerAddress a : settings.connectContainers()) {
+      connector.keepConnected(new InetSocketAddress(a.host(), a.port()));
+    }
+    long beat = settings.heartbeatInterval().toMillis();
+    timer.scheduleAtFixedRate(this::heartbeat, beat, beat, TimeUnit.MILLISECONDS);
+  }
+
+  /** The addresses this container accepts connections on. */
+  public List<InetSocketAddress> listenAddresses() {
+    return connector.listening();
+  }
+
+  /** Connects to a container at {@code address} once (an address heard from discovery). */
+  public void connect(InetSocketAddress address) {
+    if (!closed) {
+      connector.connectOnce(address);
+    }
+  }
+
+  /** Keeps a link to {@code address}, as CONNECTCONTAINERS does. */
+  public void keepConnected(InetSocketAddress address) {
+    connector.keepConnected(address);
+  }
+
+  /** Ids of the containers this one has a direct link to. */
+  public List<String> neighbours() {
+    List<String> result = new ArrayList<>();
+    links.keySet().forEach(id -> result.add(id.toString()));
+    return result;
+  }
+
+  /** Calls a remote service; see {@code ServiceCaller}. */
+  public Object call(ServiceDescriptor d, Object[] args, long deadlineNanos, ClassLoader loader)
+      throws TRADEException {
+    return calls.call(d, args, deadlineNanos, loader);
+  }
+
+  private Link nextHop(UUID container) {
+    UUID hop = replication.nextHop(container);
+    return hop == null ? null : links.get(hop);
+  }
+
+  private void onLinked(Socket socket, Handshake.Peer peer, boolean initiatedHere) {
+    Link link;
+    try {
+      link = new Link(socket, peer, initiatedHere, settings.maxFrameSize());
+    } catch (IOException e) {
+      LOG.log(Level.WARNING, "link to {0} failed at once: {1}", peer.name(), e.getMessage());
+      return;
+    }
+    if (initiatedHere) {
+      dialled.put((InetSocketAddress) socket.getRemoteSocketAddress(), peer.containerId());
+    }
+    control.execute(() -> {
+      if (closed) {
+        link.close("container closing");
+        return;
+      }
+      Link existing = links.get(peer.containerId());
+      if (existing != null && !existing.isClosed()) {
+        // Two links to one container (both dialled at once): keep the one dialled by the container
+        // with the smaller id, as the other side decides the same.
+        UUID keptInitiator = initiator(existing).compareTo(initiator(link)) <= 0
+            ? initiator(existing) : initiator(link);
+        Link drop = initiator(link).equals(keptInitiator) ? existing : link;
+        if (drop == link) {
+          link.close("duplicate link");
+          return;
+        }
+        links.remove(peer.containerId());
+        existing.close("duplicate link");
+      }
+      links.put(peer.containerId(), link);
+      LOG.log(Level.INFO, "{0}: linked to {1} ({2})", name, peer.name(), socket.getRemoteSocketAddress());
+      link.start(handler);
+      replication.linkUp(link);
+    });
+  }
+
+  private UUID initiator(Link l) {
+    return l.initiatedHere ? self : l.peerId;
+  }
+
+  private final Link.Handler handler = new Link.Handler() {
+    @Override
+    public void frame(Link link, int type, byte[] payload) throws IOException {
+      switch (type) {
+        case Wire.CALL:
+        case Wire.REPLY:
+          if (payload.length < Frames.ROUTING + 8) {
+            throw new IOException("short frame of type " + type);
+          }
+          if (type == Wire.CALL) {
+            calls.onCall(payload);
+          } else {
+            calls.onReply(payload);
+          }
+          break;
+        case Wire.PING:
+          break;
+        case Wire.GOODBYE:
+          link.close("said goodbye");
+          break;
+        case Wire.LINKS:
+        case Wire.TABLE:
+        case Wire.DELTA:
+        case Wire.TABLE_REQUEST:
+          control.execute(() -> replication.received(link, type, payload));
+          break;
+        default:
+          throw new IOException("unknown frame type " + type);
+      }
+    }
+
+    @Override
+    public void closed(Link link, String reason) {
+      control.execute(() -> {
+        if (links.remove(link.peerId, link)) {
+          LOG.log(closed ? Level.DEBUG : Level.INFO, "{0}: link to {1} closed: {2}", name,
+              link.peerName, reason);
+          calls.failVia(link.peerId, "the connection to " + link.peerName + " was lost ("
+              + reason + ")");
+          replication.linkDown();
+          if (!closed) {
+            connector.retryNow();
+          }
+        }
+      });
+    }
+  };
+
+  private void heartbeat() {
+    long now = System.nanoTime();
+    long interval = settings.heartbeatInterval().toNanos();
+    long silence = settings.failureTimeout().toNanos();
+    byte[] ping = Frames.finish(Frames.start(Wire.PING, 0));
+    for (Link l : links.values()) {
+      if (now - l.lastReceived > silence) {
+        l.close("silent for " + TimeUnit.NANOSECONDS.toMillis(now - l.lastReceived)
+            + " ms (FAILURETIMEOUT=" + settings.failureTimeout().toMillis() + ")");
+      } else if (now - l.lastSent >= interval) {
+        try {
+          l.send(ping);
+        } catch (IOException e) {
+          // send() closed the link; its reader reports it.
+        }
+      }
+    }
+  }
+
+  /** Says goodbye to every neighbour, closes all links and stops all threads. */
+  @Override
+  public void close() {
+    if (closed) {
+      return;
+    }
+    closed = true;
+    connector.close();
+    byte[] goodbye = Frames.finish(Frames.start(Wire.GOODBYE, 0));
+    for (Link l : links.values()) {
+      try {
+        l.send(goodbye);
+      } catch (IOException ignored) {
+        // Closing anyway.
+      }
+      l.close("container closing");
+    }
+    calls.failAll("container " + name + " closed");
+    control.shutdown();
+    timer.shutdownNow();
+    workers.shutdownNow();
+    try {
+      control.awaitTermination(2, TimeUnit.SECONDS);
+    } catch (InterruptedException e) {
+      Thread.currentThread().interrupt();
+    }
+  }
+
+  private static ThreadFactory daemon(String prefix) {
+    AtomicInteger n = new AtomicInteger();
+    return r -> {
+      Thread t = new Thread(r, prefix + "-" + n.incrementAndGet());
+      t.setDaemon(true);
+      return t;
+    };
+  }
+}

@@ -1,0 +1,304 @@
+package dev.trade.internal.net;
+
+import dev.trade.TRADEBadArgumentsException;
+import dev.trade.TRADEException;
+import dev.trade.TRADEInvocationException;
+import dev.trade.TRADESerializationException;
+import dev.trade.TRADEServiceUnavailableException;
+import dev.trade.TRADETimeoutException;
+import dev.trade.internal.call.Invocation;
+import dev.trade.internal.call.LocalInvoker;
+import dev.trade.internal.codec.ByteSink;
+import dev.trade.internal.codec.ByteSource;
+import dev.trade.internal.codec.Codec;
+import dev.trade.internal.registry.LocalService;
+import dev.trade.internal.registry.ServiceDescriptor;
+import java.io.IOException;
+import java.lang.System.Logger;
+import java.lang.System.Logger.Level;
+import java.util.Map;
+import java.util.UUID;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.Executor;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.concurrent.atomic.AtomicLong;
+
+/**
+ * Remote calls over links: the calling side (request ids, pending replies, deadlines), the providing
+ * side (decoding arguments, running the host chain on an executor, encoding the reply) and
+ * forwarding of calls and replies between containers that have no direct link.
+ *
+ * <p>The reader thread of a link only completes futures or hands work to the executor, so one slow
+ * service never stalls a connection. This class is safe for concurrent use.
+ */
+final class RemoteCalls {
+  private static final Logger LOG = System.getLogger("dev.trade.net");
+  private static final int MAX_TEXT = 64 * 1024;
+
+  /** Finds the link a frame for a container leaves by. */
+  interface Router {
+    /** The link towards {@code container}, or null when it is not reachable. */
+    Link nextHop(UUID container);
+  }
+
+  /** The providing side of this container. */
+  interface Host {
+    LocalService local(long serviceId);
+
+    Object invoke(Invocation call) throws TRADEException;
+  }
+
+  private record Pending(CompletableFuture<byte[]> reply, UUID destination, UUID via) {}
+
+  private final UUID self;
+  private final Codec codec;
+  private final Router router;
+  private final Host host;
+  private final Executor executor;
+  private final AtomicLong nextId = new AtomicLong();
+  private final Map<Long, Pending> pending = new ConcurrentHashMap<>();
+
+  RemoteCalls(UUID self, Codec codec, Router router, Host host, Executor executor) {
+    this.self = self;
+    this.codec = codec;
+    this.router = router;
+    this.host = host;
+    this.executor = executor;
+  }
+
+  /** Calls a service of another container and waits for its reply until the deadline. */
+  Object call(ServiceDescriptor d, Object[] args, long deadlineNanos, ClassLoader loader)
+      throws TRADEException {
+    UUID destination = UUID.fromString(d.containerId());
+    Link link = router.nextHop(destination);
+    if (link == null) {
+      throw LocalInvoker.unavailable(d, "its container is not reachable");
+    }
+    long id = nextId.incrementAndGet();
+    long remaining = deadlineNanos - System.nanoTime();
+    ByteSink out = Frames.start(Wire.CALL, 64);
+    Frames.writeRouting(out, self, destination, Wire.MAX_HOPS);
+    out.writeLong(id);
+    out.writeLong(d.serviceId());
+    out.writeInt((int) Math.min(Integer.MAX_VALUE, Math.max(1, TimeUnit.NANOSECONDS.toMillis(remaining))));
+    out.writeVarUInt(args.length);
+    for (Object a : args) {
+      codec.write(a, out);
+    }
+    byte[] frame = Frames.finish(out);
+    Pending p = new Pending(new CompletableFuture<>(), destination, link.peerId);
+    pending.put(id, p);
+    try {
+      link.send(frame);
+      if (link.isClosed()) { // closed between lookup and registration: nobody will fail us
+        throw new IOException("link closed");
+      }
+    } catch (IOException e) {
+      pending.remove(id);
+      throw LocalInvoker.unavailable(d, "the connection to its container was lost");
+    }
+    byte[] reply;
+    try {
+      reply = p.reply.get(Math.max(0, deadlineNanos - System.nanoTime()), TimeUnit.NANOSECONDS);
+    } catch (TimeoutException e) {
+      pending.remove(id);
+      throw new TRADETimeoutException("Service " + d.signature() + " of container "
+          + d.containerName() + " did not answer within "
+          + TimeUnit.NANOSECONDS.toMillis(remaining) + " ms");
+    } catch (ExecutionException e) {
+      throw (TRADEException) e.getCause();
+    } catch (InterruptedException e) {
+      pending.remove(id);
+      Thread.currentThread().interrupt();
+      throw new TRADEException("Interrupted while waiting for " + d.signature());
+    }
+    return decodeReply(d, reply, loader);
+  }
+
+  private Object decodeReply(ServiceDescriptor d, byte[] payload, ClassLoader loader)
+      throws TRADEException {
+    ByteSource in = ByteSource.of(payload, Frames.ROUTING + 8, payload.length - Frames.ROUTING - 8);
+    int status = in.readUnsignedByte();
+    switch (status) {
+      case Wire.OK:
+        return codec.read(in, loader);
+      case Wire.FAILED_INVOCATION:
+        Object t = codec.read(in, loader);
+        Throwable cause = t instanceof Throwable ? (Throwable) t : null;
+        throw new TRADEInvocationException("Service " + d.signature() + " threw "
+            + (cause == null ? "an exception" : cause.toString()), cause);
+      case Wire.FAILED_UNAVAILABLE:
+        throw new TRADEServiceUnavailableException(in.readText(MAX_TEXT));
+      case Wire.FAILED_BAD_ARGUMENTS:
+        throw new TRADEBadArgumentsException(in.readText(MAX_TEXT));
+      case Wire.FAILED_SERIALIZATION:
+        throw new TRADESerializationException(in.readText(MAX_TEXT));
+      case Wire.FAILED_TIMEOUT:
+        throw new TRADETimeoutException(in.readText(MAX_TEXT));
+      default:
+        throw new TRADEException(in.readText(MAX_TEXT));
+    }
+  }
+
+  /** A CALL frame arrived (reader thread). */
+  void onCall(byte[] payload) {
+    UUID destination = Frames.destination(payload);
+    if (!destination.equals(self)) {
+      forward(Wire.CALL, payload, destination);
+      return;
+    }
+    executor.execute(() -> serve(payload));
+  }
+
+  /** A REPLY frame arrived (reader thread). */
+  void onReply(byte[] payload) {
+    UUID destination = Frames.destination(payload);
+    if (!destination.equals(self)) {
+      forward(Wire.REPLY, payload, destination);
+      return;
+    }
+    long id = Frames.requestId(payload);
+    Pending p = pending.remove(id);
+    if (p != null) {
+      p.reply.complete(payload);
+    }
+  }
+
+  private void forward(int type, byte[] payload, UUID destination) {
+    Link next = router.nextHop(destination);
+    if (next == null || Frames.hops(payload) <= 1) {
+      LOG.log(Level.DEBUG, "dropping frame for unreachable {0}", destination);
+      if (type == Wire.CALL) {
+        reply(payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer: container "
+            + destination + " is not reachable from " + self);
+      }
+      return;
+    }
+    try {
+      next.send(Frames.forwarded(type, payload));
+    } catch (IOException e) {
+      if (type == Wire.CALL) {
+        reply(payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer: the route to"
+            + " container " + destination + " was lost");
+      }
+    }
+  }
+
+  private void serve(byte[] payload) {
+    ByteSource in = ByteSource.of(payload, Frames.ROUTING, payload.length - Frames.ROUTING);
+    try {
+      in.readLong(); // request id, echoed by reply()
+      long serviceId = in.readLong();
+      int timeoutMs = in.readInt();
+      int count = in.readVarUInt();
+      LocalService s = host.local(serviceId);
+      if (s == null) {
+        reply(payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer: service "
+            + serviceId + " was deregistered from container " + self);
+        return;
+      }
+      ServiceDescriptor d = s.descriptor();
+      if (count != d.parameterTypeNames().size()) {
+        reply(payload, Wire.FAILED_BAD_ARGUMENTS, "Service " + d.signature() + " takes "
+            + d.parameterTypeNames().size() + " arguments but got " + count);
+        return;
+      }
+      ClassLoader loader = s.target().getClass().getClassLoader();
+      Object[] args = new Object[count];
+      for (int i = 0; i < count; i++) {
+        args[i] = codec.read(in, loader == null ? ClassLoader.getSystemClassLoader() : loader);
+      }
+      long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
+      Object result = host.invoke(new Invocation(d, args, deadline));
+      ByteSink out = replyStart(payload, Wire.OK);
+      try {
+        codec.write(result, out);
+      } catch (TRADESerializationException e) {
+        reply(payload, Wire.FAILED_SERIALIZATION, "The result of " + d.signature()
+            + " cannot travel: " + e.getMessage());
+        return;
+      }
+      sendReply(payload, Frames.finish(out));
+    } catch (TRADEInvocationException e) {
+      ByteSink out = replyStart(payload, Wire.FAILED_INVOCATION);
+      try {
+        codec.write(e.getCause(), out);
+        sendReply(payload, Frames.finish(out));
+      } catch (TRADESerializationException notEncodable) {
+        reply(payload, Wire.FAILED_OTHER, e.getMessage());
+      }
+    } catch (TRADEServiceUnavailableException e) {
+      reply(payload, Wire.FAILED_UNAVAILABLE, e.getMessage());
+    } catch (TRADEBadArgumentsException e) {
+      reply(payload, Wire.FAILED_BAD_ARGUMENTS, e.getMessage());
+    } catch (TRADESerializationException e) {
+      reply(payload, Wire.FAILED_SERIALIZATION, e.getMessage());
+    } catch (TRADETimeoutException e) {
+      reply(payload, Wire.FAILED_TIMEOUT, e.getMessage());
+    } catch (TRADEException | RuntimeException e) {
+      reply(payload, Wire.FAILED_OTHER, String.valueOf(e.getMessage()));
+    }
+  }
+
+  /** A reply frame's start: routing back to the caller, the request id and a status. */
+  private ByteSink replyStart(byte[] call, int status) {
+    ByteSink out = Frames.start(Wire.REPLY, 64);
+    Frames.writeRouting(out, self, Frames.source(call), Wire.MAX_HOPS);
+    out.writeBytes(call, Frames.ROUTING, 8);
+    out.writeByte(status);
+    return out;
+  }
+
+  private void reply(byte[] call, int status, String text) {
+    ByteSink out = replyStart(call, status);
+    out.writeText(text == null ? "" : text);
+    sendReply(call, Frames.finish(out));
+  }
+
+  private void sendReply(byte[] call, byte[] frame) {
+    UUID caller = Frames.source(call);
+    Link link = router.nextHop(caller);
+    if (link == null) {
+      LOG.log(Level.DEBUG, "caller {0} is not reachable any more; reply dropped", caller);
+      return;
+    }
+    try {
+      link.send(frame);
+    } catch (IOException e) {
+      LOG.log(Level.DEBUG, "reply to {0} lost: {1}", caller, e.getMessage());
+    }
+  }
+
+  /** Fails at once every call waiting on {@code container} (it left or became unreachable). */
+  void failTo(UUID container, String why) {
+    pending.values().removeIf(p -> {
+      if (p.destination.equals(container)) {
+        p.reply.completeExceptionally(new TRADEServiceUnavailableException(
+            "Service not available any longer: " + why));
+        return true;
+      }
+      return false;
+    });
+  }
+
+  /** Fails at once every call that left through the link to {@code neighbour}. */
+  void failVia(UUID neighbour, String why) {
+    pending.values().removeIf(p -> {
+      if (p.via.equals(neighbour)) {
+        p.reply.completeExceptionally(new TRADEServiceUnavailableException(
+            "Service not available any longer: " + why));
+        return true;
+      }
+      return false;
+    });
+  }
+
+  /** Fails every waiting call (the container closes). */
+  void failAll(String why) {
+    pending.values().removeIf(p -> p.reply.completeExceptionally(
+        new TRADEServiceUnavailableException("Service not available any longer: " + why)));
+  }
+}

@@ -1,0 +1,304 @@
+package dev.trade.internal.net;
+
+import dev.trade.TRADESerializationException;
+import dev.trade.internal.codec.ByteSink;
+import dev.trade.internal.codec.ByteSource;
+import dev.trade.internal.codec.Codec;
+import dev.trade.internal.registry.Entry;
+import dev.trade.internal.registry.Registry;
+import dev.trade.internal.registry.ServiceDescriptor;
+import java.io.IOException;
+import java.lang.System.Logger;
+import java.lang.System.Logger.Level;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.UUID;
+import java.util.concurrent.Executor;
+
+/**
+ * Keeps every container's view of the system in step: link states (for routing) and service
+ * tables, each versioned by its owner and flooded over all links. A frame that changes nothing here
+ * (a version already known) is not passed on, so floods end; full state goes to each new neighbour.
+ *
+ * <p>Everything but {@link #nextHop} and {@link #localChanged} runs on the network's control thread.
+ */
+final class Replication {
+  private static final Logger LOG = System.getLogger("dev.trade.net");
+  private static final int MAX_TEXT = 1024;
+  private static final int FAR = Integer.MAX_VALUE / 2;
+
+  private final UUID self;
+  private final String selfId;
+  private final Registry registry;
+  private final Codec tableCodec;
+  private final Map<UUID, Link> links;
+  private final RemoteCalls calls;
+  private final Topology topology;
+  private volatile Map<UUID, UUID> nextHops = Map.of();
+
+  Replication(UUID self, Registry registry, Codec tableCodec, Map<UUID, Link> links, RemoteCalls calls) {
+    this.self = self;
+    this.selfId = self.toString();
+    this.registry = registry;
+    this.tableCodec = tableCodec;
+    this.links = links;
+    this.calls = calls;
+    this.topology = new Topology(selfId);
+  }
+
+  /** The neighbour on the shortest path to {@code container}, or null. Any thread. */
+  UUID nextHop(UUID container) {
+    return nextHops.get(container);
+  }
+
+  void linkUp(Link link) {
+    Topology.LinkState own = ownNeighboursChanged();
+    flood(linksFrame(own), link);
+    for (Topology.LinkState s : topology.states()) {
+      send(link, linksFrame(s));
+    }
+    send(link, tableFrame(registry.localTable()));
+    for (Registry.Table t : registry.remoteTables()) {
+      send(link, tableFrame(t));
+    }
+  }
+
+  void linkDown() {
+    flood(linksFrame(ownNeighboursChanged()), null);
+  }
+
+  private Topology.LinkState ownNeighboursChanged() {
+    Set<String> ids = new HashSet<>();
+    links.keySet().forEach(id -> ids.add(id.toString()));
+    Topology.LinkState own = topology.setOwnNeighbours(ids);
+    afterTopologyChange();
+    return own;
+  }
+
+  /** Called by the registry, under its lock, for every change: ships this container's own. */
+  void localChanged(List<Entry> added, List<Entry> removed, Executor control) {
+    List<ServiceDescriptor> add = new ArrayList<>();
+    for (Entry e : added) {
+      if (e.local() != null) {
+        add.add(e.descriptor());
+      }
+    }
+    List<Long> remove = new ArrayList<>();
+    for (Entry e : removed) {
+      if (e.local() != null) {
+        remove.add(e.descriptor().serviceId());
+      }
+    }
+    if (add.isEmpty() && remove.isEmpty()) {
+      return;
+    }
+    long version = registry.localVersion();
+    control.execute(() -> flood(deltaFrame(version, add, remove), null));
+  }
+
+  void received(Link from, int type, byte[] payload) {
+    ByteSource in = ByteSource.of(payload);
+    try {
+      switch (type) {
+        case Wire.LINKS: {
+          String owner = in.readText(MAX_TEXT);
+          long version = in.readLong();
+          int n = in.readVarUInt();
+          if (n > 65_536) {
+            throw new IOException("link state with " + n + " neighbours");
+          }
+          Set<String> neighbours = new HashSet<>();
+          for (int i = 0; i < n; i++) {
+            neighbours.add(in.readText(MAX_TEXT));
+          }
+          if (topology.apply(new Topology.LinkState(owner, version, neighbours))) {
+            flood(payloadFrame(Wire.LINKS, payload), from);
+            afterTopologyChange();
+          }
+          break;
+        }
+        case Wire.TABLE: {
+          String owner = in.readText(MAX_TEXT);
+          long version = in.readLong();
+          List<ServiceDescriptor> services = descriptors(tableCodec.read(in, loader()));
+          if (registry.applyTable(new Registry.Table(owner, version, services), distance(owner))) {
+            flood(payloadFrame(Wire.TABLE, payload), from);
+          }
+          break;
+        }
+        case Wire.DELTA: {
+          String owner = in.readText(MAX_TEXT);
+          long version = in.readLong();
+          List<ServiceDescriptor> add = descriptors(tableCodec.read(in, loader()));
+          List<Long> remove = ids(tableCodec.read(in, loader()));
+          Registry.DeltaResult r = registry.applyDelta(owner, version, add, remove, distance(owner));
+          if (r == Registry.DeltaResult.APPLIED) {
+            flood(payloadFrame(Wire.DELTA, payload), from);
+          } else if (r == Registry.DeltaResult.GAP) {
+            send(from, tableRequestFrame(owner));
+          }
+          break;
+        }
+        case Wire.TABLE_REQUEST: {
+          String owner = in.readText(MAX_TEXT);
+          if (owner.equals(selfId)) {
+            send(from, tableFrame(registry.localTable()));
+          } else {
+            for (Registry.Table t : registry.remoteTables()) {
+              if (t.containerId().equals(owner)) {
+                send(from, tableFrame(t));
+              }
+            }
+          }
+          break;
+        }
+        default:
+          break;
+      }
+    } catch (IOException | TRADESerializationException | RuntimeException e) {
+      from.close("malformed replication frame: " + e.getMessage());
+    }
+  }
+
+  private void afterTopologyChange() {
+    Map<String, Topology.Route> routes = topology.routes();
+    Map<UUID, UUID> hops = new HashMap<>();
+    Map<String, Integer> distances = new HashMap<>();
+    for (Map.Entry<String, Topology.Route> r : routes.entrySet()) {
+      hops.put(UUID.fromString(r.getKey()), UUID.fromString(r.getValue().nextHop()));
+      distances.put(r.getKey(), r.getValue().distance());
+    }
+    Map<UUID, UUID> before = nextHops;
+    nextHops = Map.copyOf(hops);
+    registry.updateDistances(distances);
+    topology.pruneUnreachable();
+    List<String> known = registry.remoteContainers();
+    for (String owner : known) {
+      if (!routes.containsKey(owner)) {
+        LOG.log(Level.INFO, "container {0} left or is not reachable any more", owner);
+        registry.removeContainer(owner);
+      }
+    }
+    for (UUID gone : before.keySet()) {
+      if (!hops.containsKey(gone)) {
+        calls.failTo(gone, "container " + gone + " left or is not reachable any more");
+      }
+    }
+    // A container that became reachable but whose table we lack (it travelled another way, or was
+    // pruned while the path was down): ask the next hop for it.
+    for (Map.Entry<UUID, UUID> h : hops.entrySet()) {
+      if (!before.containsKey(h.getKey()) && !known.contains(h.getKey().toString())) {
+        Link via = links.get(h.getValue());
+        if (via != null) {
+          send(via, tableRequestFrame(h.getKey().toString()));
+        }
+      }
+    }
+  }
+
+  private int distance(String owner) {
+    Topology.Route r = topology.route(owner);
+    return r == null ? FAR : r.distance();
+  }
+
+  private static ClassLoader loader() {
+    return Replication.class.getClassLoader();
+  }
+
+  private static List<ServiceDescriptor> descriptors(Object value) throws IOException {
+    List<ServiceDescriptor> result = new ArrayList<>();
+    if (!(value instanceof List)) {
+      throw new IOException("service table is not a list");
+    }
+    for (Object o : (List<?>) value) {
+      if (!(o instanceof ServiceDescriptor)) {
+        throw new IOException("service table holds a " + (o == null ? "null" : o.getClass().getName()));
+      }
+      result.add((ServiceDescriptor) o);
+    }
+    return result;
+  }
+
+  private static List<Long> ids(Object value) throws IOException {
+    List<Long> result = new ArrayList<>();
+    if (!(value instanceof List)) {
+      throw new IOException("removed ids are not a list");
+    }
+    for (Object o : (List<?>) value) {
+      if (!(o instanceof Long)) {
+        throw new IOException("removed id is not a long");
+      }
+      result.add((Long) o);
+    }
+    return result;
+  }
+
+  private byte[] linksFrame(Topology.LinkState s) {
+    ByteSink out = Frames.start(Wire.LINKS, 64 + 40 * s.neighbours().size());
+    out.writeText(s.owner());
+    out.writeLong(s.version());
+    out.writeVarUInt(s.neighbours().size());
+    for (String n : s.neighbours()) {
+      out.writeText(n);
+    }
+    return Frames.finish(out);
+  }
+
+  private byte[] tableFrame(Registry.Table t) {
+    ByteSink out = Frames.start(Wire.TABLE, 256);
+    out.writeText(t.containerId());
+    out.writeLong(t.version());
+    writeValue(out, t.services());
+    return Frames.finish(out);
+  }
+
+  private byte[] deltaFrame(long version, List<ServiceDescriptor> add, List<Long> remove) {
+    ByteSink out = Frames.start(Wire.DELTA, 256);
+    out.writeText(selfId);
+    out.writeLong(version);
+    writeValue(out, add);
+    writeValue(out, remove);
+    return Frames.finish(out);
+  }
+
+  private void writeValue(ByteSink out, Object value) {
+    try {
+      tableCodec.write(value, out);
+    } catch (TRADESerializationException e) {
+      // Descriptors hold strings, numbers and annotation values only.
+      throw new IllegalStateException("cannot encode a service table", e);
+    }
+  }
+
+  private static byte[] tableRequestFrame(String owner) {
+    ByteSink out = Frames.start(Wire.TABLE_REQUEST, 64);
+    out.writeText(owner);
+    return Frames.finish(out);
+  }
+
+  private static byte[] payloadFrame(int type, byte[] payload) {
+    ByteSink out = Frames.start(type, payload.length);
+    out.writeBytes(payload);
+    return Frames.finish(out);
+  }
+
+  private void flood(byte[] frame, Link except) {
+    for (Link l : links.values()) {
+      if (l != except) {
+        send(l, frame);
+      }
+    }
+  }
+
+  private static void send(Link link, byte[] frame) {
+    try {
+      link.send(frame);
+    } catch (IOException e) {
+      // The link closed itself; its reader reports the loss.
+    }
+  }
+}

@@ -1,0 +1,137 @@
+package dev.trade.internal.net;
+
+import java.util.ArrayDeque;
+import java.util.Collections;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Queue;
+import java.util.Set;
+
+/**
+ * Link-state routing: every container floods the list of containers it has a direct link to
+ * (versioned by its owner); from all lists, each container computes shortest paths (breadth-first:
+ * graphs here are small) and keeps a next hop and a distance per reachable container.
+ *
+ * <p>An edge counts only when both ends list each other, so a dead container's stale list cannot
+ * keep it reachable once its neighbours have dropped it. Routes are loop-free because each container
+ * forwards along a shortest path of the same graph, and a hop limit on every forwarded frame bounds
+ * the damage while views disagree.
+ *
+ * <p>Not thread-safe: the network's control thread owns it.
+ */
+final class Topology {
+  /** A container's reported neighbours. */
+  record LinkState(String owner, long version, Set<String> neighbours) {
+    LinkState {
+      neighbours = Set.copyOf(neighbours);
+    }
+  }
+
+  /** Next hop and distance to a destination. */
+  record Route(String nextHop, int distance) {}
+
+  private final String self;
+  private final Map<String, LinkState> states = new HashMap<>();
+  private long ownVersion;
+  private Map<String, Route> routes = Map.of();
+
+  Topology(String self) {
+    this.self = self;
+    states.put(self, new LinkState(self, 0, Set.of()));
+  }
+
+  /** Sets this container's own neighbours; returns the new own state to flood. */
+  LinkState setOwnNeighbours(Set<String> neighbours) {
+    LinkState s = new LinkState(self, ++ownVersion, neighbours);
+    states.put(self, s);
+    recompute();
+    return s;
+  }
+
+  LinkState own() {
+    return states.get(self);
+  }
+
+  /** Applies another container's state; true when it was newer than what was known. */
+  boolean apply(LinkState s) {
+    if (s.owner().equals(self)) {
+      return false;
+    }
+    LinkState known = states.get(s.owner());
+    if (known != null && known.version() >= s.version()) {
+      return false;
+    }
+    states.put(s.owner(), s);
+    recompute();
+    return true;
+  }
+
+  /** Every known state (to send to a new neighbour). */
+  List<LinkState> states() {
+    return List.copyOf(states.values());
+  }
+
+  /** The route to {@code container}, or null when it is not reachable. */
+  Route route(String container) {
+    return routes.get(container);
+  }
+
+  /** Reachable containers other than this one, with their routes. */
+  Map<String, Route> routes() {
+    return routes;
+  }
+
+  /**
+   * Forgets the states of containers that are no longer reachable (they left or died), returning
+   * their ids. A container that comes back starts over with a full exchange.
+   */
+  Set<String> pruneUnreachable() {
+    Set<String> gone = new HashSet<>();
+    for (String owner : states.keySet()) {
+      if (!owner.equals(self) && !routes.containsKey(owner)) {
+        gone.add(owner);
+      }
+    }
+    states.keySet().removeAll(gone);
+    return gone;
+  }
+
+  private void recompute() {
+    Map<String, Route> result = new HashMap<>();
+    Queue<String> queue = new ArrayDeque<>();
+    for (String n : neighboursOf(self)) {
+      result.put(n, new Route(n, 1));
+      queue.add(n);
+    }
+    while (!queue.isEmpty()) {
+      String at = queue.poll();
+      Route via = result.get(at);
+      for (String n : neighboursOf(at)) {
+        if (!n.equals(self) && !result.containsKey(n)) {
+          result.put(n, new Route(via.nextHop(), via.distance() + 1));
+          queue.add(n);
+        }
+      }
+    }
+    routes = Collections.unmodifiableMap(result);
+  }
+
+  /** Neighbours of {@code node} that list {@code node} back, sorted for determinism. */
+  private List<String> neighboursOf(String node) {
+    LinkState s = states.get(node);
+    if (s == null) {
+      return List.of();
+    }
+    List<String> result = new java.util.ArrayList<>();
+    for (String n : s.neighbours()) {
+      LinkState back = states.get(n);
+      if (back != null && back.neighbours().contains(node)) {
+        result.add(n);
+      }
+    }
+    Collections.sort(result);
+    return result;
+  }
+}
