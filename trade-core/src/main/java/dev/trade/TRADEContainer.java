@@ -171,6 +171,11 @@ public final class TRADEContainer implements AutoCloseable {
     return result;
   }
 
+  /** The ids of the containers this one has a direct, authenticated link to right now. */
+  public List<String> getNeighbours() {
+    return core.neighbours();
+  }
+
   /** Deregisters every service of this container and disconnects it. Idempotent. */
   @Override
   public void close() {

@@ -22,6 +22,8 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Executor;
+import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicLong;
@@ -58,15 +60,18 @@ final class RemoteCalls {
   private final Router router;
   private final Host host;
   private final Executor executor;
+  private final ScheduledExecutorService timer;
   private final AtomicLong nextId = new AtomicLong();
   private final Map<Long, Pending> pending = new ConcurrentHashMap<>();
 
-  RemoteCalls(UUID self, Codec codec, Router router, Host host, Executor executor) {
+  RemoteCalls(UUID self, Codec codec, Router router, Host host, Executor executor,
+      ScheduledExecutorService timer) {
     this.self = self;
     this.codec = codec;
     this.router = router;
     this.host = host;
     this.executor = executor;
+    this.timer = timer;
   }
 
   /** Calls a service of another container and waits for its reply until the deadline. */
@@ -168,6 +173,12 @@ final class RemoteCalls {
   }
 
   private void forward(int type, byte[] payload, UUID destination) {
+    if (type == Wire.REPLY) {
+      if (Frames.hops(payload) > 1) {
+        deliver(destination, Frames.forwarded(type, payload), 0);
+      }
+      return;
+    }
     Link next = router.nextHop(destination);
     if (next == null || Frames.hops(payload) <= 1) {
       LOG.log(Level.DEBUG, "dropping frame for unreachable {0}", destination);
@@ -259,16 +270,32 @@ final class RemoteCalls {
   }
 
   private void sendReply(byte[] call, byte[] frame) {
-    UUID caller = Frames.source(call);
+    deliver(Frames.source(call), frame, 0);
+  }
+
+  /**
+   * Sends a reply towards its caller. When the route is broken (a link just failed and routes are
+   * being recomputed), tries again a few times over about half a second: a caller must not wait for
+   * its deadline because a reply met a stale route.
+   */
+  private void deliver(UUID caller, byte[] frame, int attempt) {
     Link link = router.nextHop(caller);
-    if (link == null) {
-      LOG.log(Level.DEBUG, "caller {0} is not reachable any more; reply dropped", caller);
+    if (link != null) {
+      try {
+        link.send(frame);
+        return;
+      } catch (IOException e) {
+        // Fall through to a later attempt over the recomputed route.
+      }
+    }
+    if (attempt >= 6) {
+      LOG.log(Level.DEBUG, "reply to {0} dropped: no route", caller);
       return;
     }
     try {
-      link.send(frame);
-    } catch (IOException e) {
-      LOG.log(Level.DEBUG, "reply to {0} lost: {1}", caller, e.getMessage());
+      timer.schedule(() -> deliver(caller, frame, attempt + 1), 10L << attempt, TimeUnit.MILLISECONDS);
+    } catch (RejectedExecutionException closing) {
+      // The container is closing; its callers fail on their own.
     }
   }
 

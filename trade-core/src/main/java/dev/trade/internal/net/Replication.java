@@ -30,6 +30,8 @@ final class Replication {
   private static final Logger LOG = System.getLogger("dev.trade.net");
   private static final int MAX_TEXT = 1024;
   private static final int FAR = Integer.MAX_VALUE / 2;
+  /** How long the link state of an unreachable container is kept (it may be reachable soon). */
+  private static final long STATE_GRACE_NANOS = 60_000_000_000L;
 
   private final UUID self;
   private final String selfId;
@@ -175,7 +177,7 @@ final class Replication {
     Map<UUID, UUID> before = nextHops;
     nextHops = Map.copyOf(hops);
     registry.updateDistances(distances);
-    topology.pruneUnreachable();
+    topology.pruneUnreachable(System.nanoTime(), STATE_GRACE_NANOS);
     List<String> known = registry.remoteContainers();
     for (String owner : known) {
       if (!routes.containsKey(owner)) {

@@ -3,7 +3,6 @@ package dev.trade.internal.net;
 import java.util.ArrayDeque;
 import java.util.Collections;
 import java.util.HashMap;
-import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Queue;
@@ -34,6 +33,7 @@ final class Topology {
 
   private final String self;
   private final Map<String, LinkState> states = new HashMap<>();
+  private final Map<String, Long> unreachableSince = new HashMap<>();
   private long ownVersion;
   private Map<String, Route> routes = Map.of();
 
@@ -84,18 +84,25 @@ final class Topology {
   }
 
   /**
-   * Forgets the states of containers that are no longer reachable (they left or died), returning
-   * their ids. A container that comes back starts over with a full exchange.
+   * Forgets the states of containers that have been unreachable for longer than {@code graceNanos}
+   * (they left or died; a restarted container has a new id). States of unreachable containers are
+   * kept for a while because a state may arrive before the states that connect its owner to us.
    */
-  Set<String> pruneUnreachable() {
-    Set<String> gone = new HashSet<>();
+  void pruneUnreachable(long nowNanos, long graceNanos) {
     for (String owner : states.keySet()) {
-      if (!owner.equals(self) && !routes.containsKey(owner)) {
-        gone.add(owner);
+      if (owner.equals(self) || routes.containsKey(owner)) {
+        unreachableSince.remove(owner);
+      } else {
+        unreachableSince.putIfAbsent(owner, nowNanos);
       }
     }
-    states.keySet().removeAll(gone);
-    return gone;
+    unreachableSince.entrySet().removeIf(e -> {
+      if (nowNanos - e.getValue() > graceNanos) {
+        states.remove(e.getKey());
+        return true;
+      }
+      return !states.containsKey(e.getKey());
+    });
   }
 
   private void recompute() {
