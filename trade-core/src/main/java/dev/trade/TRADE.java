@@ -96,6 +96,24 @@ public final class TRADE {
     return getDefaultContainer().getAvailableServices(constraints);
   }
 
+  /** See {@link TRADEContainer#requestNotification}. */
+  public static void requestNotification(Object listener, String type,
+      TRADEServiceConstraints constraints, Object argument, String callbackMethod) throws TRADEException {
+    getDefaultContainer().requestNotification(listener, type, constraints, argument, callbackMethod);
+  }
+
+  /** See {@link TRADEContainer#cancelNotification}. */
+  public static void cancelNotification(Object listener, String type,
+      TRADEServiceConstraints constraints) throws TRADEException {
+    getDefaultContainer().cancelNotification(listener, type, constraints);
+  }
+
+  /** See {@link TRADEContainer#registerNotificationNowOrWhenJoined}. */
+  public static void registerNotificationNowOrWhenJoined(Object listener,
+      TRADEServiceConstraints constraints, String callbackMethod) throws TRADEException {
+    getDefaultContainer().registerNotificationNowOrWhenJoined(listener, constraints, callbackMethod);
+  }
+
   /** See {@link TRADEContainer#getAvailableServices(Class, TRADEServiceConstraints)}. */
   public static Collection<TRADEServiceInfo> getAvailableServices(
       Class<? extends Annotation> annotation, TRADEServiceConstraints constraints) {

@@ -3,6 +3,7 @@ package dev.trade;
 import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.config.Settings;
 import dev.trade.internal.container.ContainerCore;
+import dev.trade.internal.notify.Notifications;
 import dev.trade.internal.registry.Entry;
 import dev.trade.internal.registry.LocalService;
 import dev.trade.internal.registry.Query;
@@ -36,6 +37,7 @@ import java.util.Set;
  */
 public final class TRADEContainer implements AutoCloseable {
   private final ContainerCore core;
+  private final Notifications notifications;
 
   private TRADEContainer(Settings settings) {
     this.core = new ContainerCore(settings, new InfoBinding() {
@@ -49,6 +51,8 @@ public final class TRADEContainer implements AutoCloseable {
         return TRADEContainer.this.bind(descriptor);
       }
     });
+    this.notifications = new Notifications(core.registry(), TRADEServiceInfo.class, this::bind,
+        core.name());
   }
 
   /** A builder starting from the built-in defaults (no configuration file is read). */
@@ -171,6 +175,53 @@ public final class TRADEContainer implements AutoCloseable {
     return result;
   }
 
+  /**
+   * Asks for {@code listener.callbackMethod(TRADEServiceInfo)} to be called for every service
+   * matching {@code constraints} that becomes available ({@code "joined"}) or goes away
+   * ({@code "left"}) anywhere in the system from now on: registered or deregistered locally, or in
+   * a container that joins, leaves or dies. The callback must be a public {@code @TRADEService}
+   * method taking one {@code TRADEServiceInfo}: callbacks are services.
+   *
+   * <p>Callbacks run on one delivery thread of this container, one event at a time, in the order
+   * the changes happened; each event reaches each matching request once. A callback that throws is
+   * logged and does not stop later deliveries.
+   *
+   * @param constraints the services of interest (null: all)
+   * @param argument reserved for notification types that take one; ignored by joined and left
+   * @throws TRADEBadArgumentsException an unknown type, or no usable callback method (the message
+   *     names the class and method and what is wrong)
+   */
+  public void requestNotification(Object listener, String type, TRADEServiceConstraints constraints,
+      Object argument, String callbackMethod) throws TRADEException {
+    checkOpen();
+    notifications.request(listener, type, query(constraints), callbackMethod);
+  }
+
+  /**
+   * Cancels the listener's notifications of {@code type} whose constraints equal
+   * {@code constraints}, or all of that type when {@code constraints} is null. Events already
+   * queued for a cancelled request are not delivered.
+   */
+  public void cancelNotification(Object listener, String type, TRADEServiceConstraints constraints)
+      throws TRADEException {
+    notifications.cancel(listener, type, constraints == null ? null : constraints.toQuery());
+  }
+
+  /**
+   * Calls {@code listener.callbackMethod(TRADEServiceInfo)} now for every service already matching
+   * {@code constraints}, and then for every one that joins: without a race between the two, so
+   * each service is delivered exactly once.
+   */
+  public void registerNotificationNowOrWhenJoined(Object listener,
+      TRADEServiceConstraints constraints, String callbackMethod) throws TRADEException {
+    checkOpen();
+    notifications.requestNowOrWhenJoined(listener, query(constraints), callbackMethod);
+  }
+
+  private static Query query(TRADEServiceConstraints constraints) {
+    return (constraints == null ? new TRADEServiceConstraints() : constraints).toQuery();
+  }
+
   /** The ids of the containers this one has a direct, authenticated link to right now. */
   public List<String> getNeighbours() {
     return core.neighbours();
@@ -180,6 +231,7 @@ public final class TRADEContainer implements AutoCloseable {
   @Override
   public void close() {
     core.close();
+    notifications.close();
   }
 
   /** A service info for {@code d} whose calls go through this container. */

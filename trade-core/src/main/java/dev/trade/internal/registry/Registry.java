@@ -294,6 +294,14 @@ public final class Registry {
     }
   }
 
+  /**
+   * Runs {@code action} while no change can happen: listeners are told of changes under the same
+   * lock, so an action that reads and subscribes misses nothing and sees nothing twice.
+   */
+  public synchronized void runLocked(Runnable action) {
+    action.run();
+  }
+
   /** The active local service with this id, or null. Lock-free. */
   public LocalService local(long serviceId) {
     return localById.get(serviceId);

@@ -93,6 +93,11 @@ final class ServiceScanner {
     return new LocalService(d, target, m, invoker(hierarchy, m));
   }
 
+  /** The invoker of one service method of {@code type} (see {@link LocalService#invoker()}). */
+  static MethodHandle prepareInvoker(Class<?> type, Method m) throws TRADERegistrationException {
+    return invoker(hierarchy(type), m);
+  }
+
   /** Supplies container identity and a fresh service id for each prepared service. */
   interface DescriptorFactory {
     ServiceDescriptor create(String name, List<String> parameterNames, List<String> parameterTypeNames,
