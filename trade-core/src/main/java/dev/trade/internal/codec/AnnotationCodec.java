@@ -84,8 +84,7 @@ final class AnnotationCodec {
         throw new TRADESerializationException(
             "Cannot decode annotation @" + typeName + ": member " + m.names[i] + " is missing");
       }
-      values[i] = Structs.fit(v, m.types[i], NO_ADAPTATION,
-          "member " + m.names[i] + " of @" + typeName);
+      values[i] = Structs.fit(v, m.types[i], NO_ADAPTATION, "member ", m.names[i], "@" + typeName);
     }
     try {
       return (Annotation) Proxy.newProxyInstance(

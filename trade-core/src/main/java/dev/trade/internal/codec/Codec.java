@@ -30,6 +30,7 @@ public final class Codec {
   private final AllowList allowList;
   private final Limits limits;
   private final InfoBinding info;
+  private final TypeCache types = new TypeCache();
 
   /**
    * @param allowList the classes decoding may load
@@ -91,7 +92,7 @@ public final class Codec {
       in.limit = (int) valueLimit;
     }
     try {
-      return new Decoder(in, limits, allowList, info, loader).readValue();
+      return new Decoder(in, limits, allowList, info, loader, types).readValue();
     } catch (RuntimeException e) { // a safety net; the decoder checks everything it knows of
       throw new MalformedValueException("internal decoding error: " + e, e);
     } finally {

@@ -30,14 +30,17 @@ final class Decoder {
   final AllowList allowList;
   final InfoBinding info;
   final ClassLoader loader;
+  private final TypeCache types;
   private int depth;
 
-  Decoder(ByteSource in, Limits limits, AllowList allowList, InfoBinding info, ClassLoader loader) {
+  Decoder(ByteSource in, Limits limits, AllowList allowList, InfoBinding info, ClassLoader loader,
+      TypeCache types) {
     this.in = in;
     this.limits = limits;
     this.allowList = allowList;
     this.info = info;
     this.loader = loader;
+    this.types = types;
   }
 
   Object readValue() throws TRADESerializationException {
@@ -149,6 +152,10 @@ final class Decoder {
    * it (without initialising it).
    */
   Class<?> resolve(String name) throws TRADESerializationException {
+    Class<?> known = types.get(name, loader);
+    if (known != null && allowList.isAllowed(name)) {
+      return known;
+    }
     Class<?> primitive = Primitives.named(name);
     if (primitive != null) {
       return primitive;
@@ -160,7 +167,9 @@ final class Decoder {
       throw refused(name);
     }
     try {
-      return Class.forName(name, false, loader);
+      Class<?> type = Class.forName(name, false, loader);
+      types.put(name, loader, type);
+      return type;
     } catch (ClassNotFoundException | LinkageError e) {
       throw new TRADESerializationException("Cannot decode a " + name
           + ": the class is not known here (" + e.getMessage() + ")");
