@@ -229,6 +229,9 @@ final class Decoder {
     if (component.isPrimitive()) {
       throw new MalformedValueException("object array of primitive type " + componentName);
     }
+    if (componentName.startsWith("[".repeat(TypeNames.MAX_DIMENSIONS))) {
+      throw new MalformedValueException("array of more than 255 dimensions");
+    }
     int n = readCount(1);
     enter();
     Object[] array = (Object[]) Array.newInstance(component, n);
@@ -250,8 +253,8 @@ final class Decoder {
     String constant = readName();
     ClassModel m = ClassModel.of(type);
     if (m.constants == null) {
-      throw new TRADESerializationException("Cannot decode " + typeName + "." + constant
-          + ": " + typeName + " is not an enum here");
+      throw new TRADESerializationException("Cannot decode " + typeName + "." + constant + ": "
+          + (m.reason == null ? typeName + " is not an enum here" : m.reason));
     }
     Enum<?> value = m.constants.get(constant);
     if (value == null) {

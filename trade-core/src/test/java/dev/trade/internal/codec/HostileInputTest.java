@@ -232,6 +232,11 @@ class HostileInputTest {
     for (String h : hex) {
       assertMalformed(codec, HexFormat.of().parseHex(h));
     }
+    ByteSink tooManyDimensions = new ByteSink(); // its elements would need 256 dimensions
+    tooManyDimensions.writeByte(Tags.ARRAY);
+    tooManyDimensions.writeText("[".repeat(255) + "I");
+    tooManyDimensions.writeVarUInt(0);
+    assertMalformed(codec, tooManyDimensions.toByteArray());
   }
 
   @Test
