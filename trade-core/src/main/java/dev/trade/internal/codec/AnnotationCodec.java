@@ -84,8 +84,7 @@ final class AnnotationCodec {
         throw new TRADESerializationException(
             "Cannot decode annotation @" + typeName + ": member " + m.names[i] + " is missing");
       }
-      values[i] = Structs.fit(v, m.types[i], NO_ADAPTATION,
-          "member " + m.names[i] + " of @" + typeName);
+      values[i] = Structs.fit(v, m.types[i], NO_ADAPTATION, "member ", m.names[i], "@" + typeName);
     }
     try {
       return (Annotation) Proxy.newProxyInstance(
@@ -109,17 +108,23 @@ final class AnnotationCodec {
 
     private Members(Class<?> type) {
       this.type = type;
-      Method[] methods = Arrays.stream(type.getDeclaredMethods())
-          .filter(m -> !Modifier.isStatic(m.getModifiers()) && m.getParameterCount() == 0
-              && !m.isSynthetic())
-          .sorted(Comparator.comparing(Method::getName))
-          .toArray(Method[]::new);
+      Method[] methods;
+      String trouble = type.isAnnotation() ? null : "it is not an annotation type";
+      try {
+        methods = Arrays.stream(type.getDeclaredMethods())
+            .filter(m -> !Modifier.isStatic(m.getModifiers()) && m.getParameterCount() == 0
+                && !m.isSynthetic())
+            .sorted(Comparator.comparing(Method::getName))
+            .toArray(Method[]::new);
+      } catch (RuntimeException | LinkageError e) { // a member type is missing here
+        methods = new Method[0];
+        trouble = "its members cannot be read (" + e + ")";
+      }
       int n = methods.length;
       names = new String[n];
       types = new Class<?>[n];
       defaults = new Object[n];
       getters = new MethodHandle[n];
-      String trouble = type.isAnnotation() ? null : "it is not an annotation type";
       for (int i = 0; i < n && trouble == null; i++) {
         Method method = methods[i];
         names[i] = method.getName();

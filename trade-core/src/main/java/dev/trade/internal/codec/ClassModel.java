@@ -177,8 +177,12 @@ final class ClassModel {
       return new ClassModel(c, Kind.ENUM, null);
     }
     Map<String, Enum<?>> constants = new HashMap<>();
-    for (Object constant : c.getEnumConstants()) {
-      constants.put(((Enum<?>) constant).name(), (Enum<?>) constant);
+    try {
+      for (Object constant : c.getEnumConstants()) { // initialises the class
+        constants.put(((Enum<?>) constant).name(), (Enum<?>) constant);
+      }
+    } catch (RuntimeException | LinkageError e) {
+      return new ClassModel(c, Kind.ENUM, "its constants are not available (" + e + ")");
     }
     return new ClassModel(c, Kind.ENUM, null, null, null, null, null, null, Map.copyOf(constants));
   }

@@ -23,6 +23,10 @@ import java.util.Objects;
  * {@link MalformedValueException}; a well-formed value that names a refused, unknown or
  * incompatible class fails with its superclass, {@link TRADESerializationException}.
  *
+ * <p>Records and data classes are read and rebuilt reflectively. On the module path, their packages
+ * must therefore be open to module {@code dev.trade}; a class whose members cannot be made
+ * accessible travels with Java serialization if it is {@code Serializable}, and fails otherwise.
+ *
  * <p>Instances are immutable and safe for concurrent use; per-class reflection is done once and
  * cached. The allow-list is shared, so patterns added to it later apply to this codec.
  */
@@ -30,6 +34,7 @@ public final class Codec {
   private final AllowList allowList;
   private final Limits limits;
   private final InfoBinding info;
+  private final TypeCache types = new TypeCache();
 
   /**
    * @param allowList the classes decoding may load
@@ -58,6 +63,7 @@ public final class Codec {
    *     cycle), or needs more than {@code maxBytes}
    */
   public void write(Object value, ByteSink out) throws TRADESerializationException {
+    Objects.requireNonNull(out, "out == null");
     int start = out.size();
     try {
       Encoder encoder = new Encoder(out, limits, info);
@@ -84,6 +90,7 @@ public final class Codec {
    *     not accept the decoded values
    */
   public Object read(ByteSource in, ClassLoader loader) throws TRADESerializationException {
+    Objects.requireNonNull(in, "in == null");
     Objects.requireNonNull(loader, "loader == null");
     int savedLimit = in.limit;
     long valueLimit = (long) in.pos + limits.maxBytes();
@@ -91,7 +98,7 @@ public final class Codec {
       in.limit = (int) valueLimit;
     }
     try {
-      return new Decoder(in, limits, allowList, info, loader).readValue();
+      return new Decoder(in, limits, allowList, info, loader, types).readValue();
     } catch (RuntimeException e) { // a safety net; the decoder checks everything it knows of
       throw new MalformedValueException("internal decoding error: " + e, e);
     } finally {

@@ -30,14 +30,17 @@ final class Decoder {
   final AllowList allowList;
   final InfoBinding info;
   final ClassLoader loader;
+  private final TypeCache types;
   private int depth;
 
-  Decoder(ByteSource in, Limits limits, AllowList allowList, InfoBinding info, ClassLoader loader) {
+  Decoder(ByteSource in, Limits limits, AllowList allowList, InfoBinding info, ClassLoader loader,
+      TypeCache types) {
     this.in = in;
     this.limits = limits;
     this.allowList = allowList;
     this.info = info;
     this.loader = loader;
+    this.types = types;
   }
 
   Object readValue() throws TRADESerializationException {
@@ -149,6 +152,10 @@ final class Decoder {
    * it (without initialising it).
    */
   Class<?> resolve(String name) throws TRADESerializationException {
+    Class<?> known = types.get(name, loader);
+    if (known != null && allowList.isAllowed(name)) {
+      return known;
+    }
     Class<?> primitive = Primitives.named(name);
     if (primitive != null) {
       return primitive;
@@ -160,7 +167,9 @@ final class Decoder {
       throw refused(name);
     }
     try {
-      return Class.forName(name, false, loader);
+      Class<?> type = Class.forName(name, false, loader);
+      types.put(name, loader, type);
+      return type;
     } catch (ClassNotFoundException | LinkageError e) {
       throw new TRADESerializationException("Cannot decode a " + name
           + ": the class is not known here (" + e.getMessage() + ")");
@@ -220,6 +229,9 @@ final class Decoder {
     if (component.isPrimitive()) {
       throw new MalformedValueException("object array of primitive type " + componentName);
     }
+    if (componentName.startsWith("[".repeat(TypeNames.MAX_DIMENSIONS))) {
+      throw new MalformedValueException("array of more than 255 dimensions");
+    }
     int n = readCount(1);
     enter();
     Object[] array = (Object[]) Array.newInstance(component, n);
@@ -241,8 +253,8 @@ final class Decoder {
     String constant = readName();
     ClassModel m = ClassModel.of(type);
     if (m.constants == null) {
-      throw new TRADESerializationException("Cannot decode " + typeName + "." + constant
-          + ": " + typeName + " is not an enum here");
+      throw new TRADESerializationException("Cannot decode " + typeName + "." + constant + ": "
+          + (m.reason == null ? typeName + " is not an enum here" : m.reason));
     }
     Enum<?> value = m.constants.get(constant);
     if (value == null) {

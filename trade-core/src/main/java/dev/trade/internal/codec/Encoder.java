@@ -126,6 +126,9 @@ final class Encoder {
 
   private void writeString(String s) throws TRADESerializationException {
     checkRoom(s.length());
+    if (s.length() > limits.maxElements() / 3) { // else even 3 bytes per char fit
+      checkCount(ByteSink.utf8Length(s, s.length()), s);
+    }
     out.writeByte(Tags.STRING);
     out.writeText(s);
   }
@@ -182,7 +185,7 @@ final class Encoder {
 
   private void writeCollection(int tag, Collection<?> c) throws TRADESerializationException {
     enter(c);
-    int n = c.size();
+    int n = checkCount(c.size(), c);
     out.writeByte(tag);
     out.writeVarUInt(n);
     Iterator<?> it = c.iterator();
@@ -201,7 +204,7 @@ final class Encoder {
 
   private void writeMap(Map<?, ?> map) throws TRADESerializationException {
     enter(map);
-    int n = map.size();
+    int n = checkCount(map.size(), map);
     out.writeByte(Tags.MAP);
     out.writeVarUInt(n);
     Iterator<? extends Map.Entry<?, ?>> it = map.entrySet().iterator();
@@ -227,6 +230,7 @@ final class Encoder {
 
   private void writeArray(Object[] a) throws TRADESerializationException {
     enter(a);
+    checkCount(a.length, a);
     out.writeByte(Tags.ARRAY);
     out.writeText(a.getClass().getComponentType().getName());
     out.writeVarUInt(a.length);
@@ -240,6 +244,7 @@ final class Encoder {
   /** Writes the tag (unless negative), varint length and two's-complement big-endian bytes. */
   private void writeBigInteger(int tag, BigInteger v) throws TRADESerializationException {
     byte[] bytes = v.toByteArray();
+    checkCount(bytes.length, v);
     checkRoom(bytes.length);
     if (tag >= 0) {
       out.writeByte(tag);
@@ -248,7 +253,9 @@ final class Encoder {
     out.writeBytes(bytes);
   }
 
-  private void arrayHeader(int tag, int length, int elementSize) throws TRADESerializationException {
+  private void arrayHeader(int tag, Object array, int length, int elementSize)
+      throws TRADESerializationException {
+    checkCount(length, array);
     checkRoom((long) length * elementSize);
     out.writeByte(tag);
     out.writeVarUInt(length);
@@ -256,12 +263,12 @@ final class Encoder {
   }
 
   private void writeBytes(byte[] a) throws TRADESerializationException {
-    arrayHeader(Tags.BYTES, a.length, 1);
+    arrayHeader(Tags.BYTES, a, a.length, 1);
     out.writeBytes(a);
   }
 
   private void writeBooleans(boolean[] a) throws TRADESerializationException {
-    arrayHeader(Tags.BOOLEANS, a.length, 1);
+    arrayHeader(Tags.BOOLEANS, a, a.length, 1);
     byte[] b = out.buf;
     int p = out.size;
     for (boolean x : a) {
@@ -271,7 +278,7 @@ final class Encoder {
   }
 
   private void writeShorts(short[] a) throws TRADESerializationException {
-    arrayHeader(Tags.SHORTS, a.length, 2);
+    arrayHeader(Tags.SHORTS, a, a.length, 2);
     byte[] b = out.buf;
     int p = out.size;
     for (short x : a) {
@@ -282,7 +289,7 @@ final class Encoder {
   }
 
   private void writeChars(char[] a) throws TRADESerializationException {
-    arrayHeader(Tags.CHARS, a.length, 2);
+    arrayHeader(Tags.CHARS, a, a.length, 2);
     byte[] b = out.buf;
     int p = out.size;
     for (char x : a) {
@@ -293,7 +300,7 @@ final class Encoder {
   }
 
   private void writeInts(int[] a) throws TRADESerializationException {
-    arrayHeader(Tags.INTS, a.length, 4);
+    arrayHeader(Tags.INTS, a, a.length, 4);
     byte[] b = out.buf;
     int p = out.size;
     for (int x : a) {
@@ -304,7 +311,7 @@ final class Encoder {
   }
 
   private void writeLongs(long[] a) throws TRADESerializationException {
-    arrayHeader(Tags.LONGS, a.length, 8);
+    arrayHeader(Tags.LONGS, a, a.length, 8);
     byte[] b = out.buf;
     int p = out.size;
     for (long x : a) {
@@ -315,7 +322,7 @@ final class Encoder {
   }
 
   private void writeFloats(float[] a) throws TRADESerializationException {
-    arrayHeader(Tags.FLOATS, a.length, 4);
+    arrayHeader(Tags.FLOATS, a, a.length, 4);
     byte[] b = out.buf;
     int p = out.size;
     for (float x : a) {
@@ -326,7 +333,7 @@ final class Encoder {
   }
 
   private void writeDoubles(double[] a) throws TRADESerializationException {
-    arrayHeader(Tags.DOUBLES, a.length, 8);
+    arrayHeader(Tags.DOUBLES, a, a.length, 8);
     byte[] b = out.buf;
     int p = out.size;
     for (double x : a) {
@@ -346,6 +353,15 @@ final class Encoder {
 
   void leave() {
     depth--;
+  }
+
+  /** Returns {@code n}, or fails if it is more elements (or bytes) than a decoder accepts. */
+  int checkCount(int n, Object container) throws TRADESerializationException {
+    if (n > limits.maxElements()) {
+      throw new TRADESerializationException("Cannot encode " + container.getClass().getName()
+          + ": its " + n + " elements exceed the limit of " + limits.maxElements());
+    }
+    return n;
   }
 
   /** Fails if {@code extra} more bytes would make the value longer than {@code maxBytes}. */

@@ -32,6 +32,7 @@ final class JavaSerialization {
       throw new TRADESerializationException(
           "Cannot encode " + name + " with Java serialization: " + ex, ex);
     }
+    e.checkCount(bytes.size(), value);
     e.checkRoom(bytes.size() + 6L);
     ByteSink out = e.out;
     out.writeByte(Tags.JAVA);

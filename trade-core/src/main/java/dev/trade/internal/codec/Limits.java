@@ -6,7 +6,7 @@ package dev.trade.internal.codec;
  * The encoder applies the same bounds, so that a value that cannot be decoded is refused when it is
  * written.
  *
- * <p>Note that the decoded object graph may need several times {@code maxBytes} of heap: a one-byte
+ * <p>Immutable, like every record. Note that the decoded object graph may need several times {@code maxBytes} of heap: a one-byte
  * {@code null} element still costs a reference, and a two-byte empty list costs an {@code ArrayList}.
  *
  * @param maxBytes the most bytes one encoded value may occupy

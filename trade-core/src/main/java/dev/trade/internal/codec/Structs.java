@@ -27,7 +27,7 @@ final class Structs {
     boolean[] present = readFields(d, m, values);
     for (int i = 0; i < values.length; i++) {
       values[i] = present[i]
-          ? fit(values[i], m.types[i], d.allowList, "component " + m.names[i] + " of " + typeName)
+          ? fit(values[i], m.types[i], d.allowList, "component ", m.names[i], typeName)
           : Primitives.defaultValue(m.types[i]);
     }
     try {
@@ -48,7 +48,7 @@ final class Structs {
     boolean[] present = readFields(d, m, values);
     for (int i = 0; i < values.length; i++) {
       if (present[i]) {
-        values[i] = fit(values[i], m.types[i], d.allowList, "field " + m.names[i] + " of " + typeName);
+        values[i] = fit(values[i], m.types[i], d.allowList, "field ", m.names[i], typeName);
       }
     }
     try {
@@ -95,10 +95,10 @@ final class Structs {
   /**
    * Returns {@code value} if it fits a variable of {@code type}, a copy of a decoded collection or
    * map in the declared concrete class (for example a {@code TreeMap} field), or fails naming
-   * {@code where}.
+   * {@code what + member + " of " + owner} (joined only then: this runs for every field).
    */
-  static Object fit(Object value, Class<?> type, AllowList allowList, String where)
-      throws TRADESerializationException {
+  static Object fit(Object value, Class<?> type, AllowList allowList, String what, String member,
+      String owner) throws TRADESerializationException {
     if (type.isPrimitive()
         ? value != null && value.getClass() == Primitives.wrap(type)
         : value == null || type.isInstance(value)) {
@@ -108,7 +108,8 @@ final class Structs {
     if (adapted != null) {
       return adapted;
     }
-    throw new TRADESerializationException("Cannot decode " + where + ": it is declared "
+    throw new TRADESerializationException("Cannot decode " + what + member + " of " + owner
+        + ": it is declared "
         + type.getTypeName() + " but the value is "
         + (value == null ? "null" : "a " + value.getClass().getName()));
   }

@@ -150,7 +150,7 @@ final class ThrowableCodec {
             MethodHandle h = MethodHandles.lookup().unreflectConstructor(c);
             return new Maker(h.asType(h.type().changeReturnType(Object.class)), shape.length);
           }
-        } catch (ReflectiveOperationException | RuntimeException e) {
+        } catch (ReflectiveOperationException | RuntimeException | LinkageError e) {
           // try the next shape
         }
       }

@@ -2,7 +2,8 @@ package dev.trade.internal.codec;
 
 /** Syntax checks for the class names that appear in encoded values. */
 final class TypeNames {
-  private static final int MAX_DIMENSIONS = 255;
+  /** The JVM's limit on array dimensions. */
+  static final int MAX_DIMENSIONS = 255;
 
   private TypeNames() {}
 

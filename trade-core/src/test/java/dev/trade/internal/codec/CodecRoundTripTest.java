@@ -198,11 +198,16 @@ class CodecRoundTripTest {
   }
 
   @Test
-  void encodingBeyondMaxBytesFails() {
+  void encodingBeyondLimitsFails() throws Exception {
     Codec small = codec(new Limits(1024, 64, 1 << 20, 100));
     assertThrows(TRADESerializationException.class, () -> small.encode(new byte[2000]));
     assertThrows(TRADESerializationException.class,
         () -> small.encode(java.util.Collections.nCopies(600, 1)));
+    Codec few = codec(new Limits(1 << 20, 64, 10, 100));
+    assertThrows(TRADESerializationException.class, () -> few.encode(new int[11]));
+    assertThrows(TRADESerializationException.class, () -> few.encode(List.of(1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11)));
+    assertThrows(TRADESerializationException.class, () -> few.encode("é".repeat(6)));
+    assertEquals("é".repeat(5), few.decode(few.encode("é".repeat(5)), loader()));
   }
 
   @Test

@@ -1,0 +1,262 @@
+package dev.trade.internal.codec;
+
+import static dev.trade.internal.codec.TestTypes.loader;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
+
+import dev.trade.TRADESerializationException;
+import dev.trade.internal.codec.TestTypes.Color;
+import dev.trade.internal.codec.TestTypes.FakeInfo;
+import dev.trade.internal.codec.TestTypes.Holder;
+import dev.trade.internal.codec.TestTypes.Labeled;
+import dev.trade.internal.codec.TestTypes.Legacy;
+import dev.trade.internal.codec.TestTypes.Point;
+import dev.trade.internal.codec.TestTypes.Pose;
+import java.math.BigDecimal;
+import java.nio.ByteBuffer;
+import java.time.Instant;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HexFormat;
+import java.util.List;
+import java.util.Map;
+import java.util.Random;
+import java.util.UUID;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Hostile and corrupt input must fail with {@link MalformedValueException} (or, for well-formed
+ * values naming a refused or unknown class, its superclass) and never with an unchecked exception,
+ * an error such as OutOfMemoryError or StackOverflowError, or a hang.
+ */
+class HostileInputTest {
+  private final Codec codec = TestTypes.codec();
+
+  private static final int ALL_TAGS_MASK = 0xFF;
+
+  /** Valid encodings of values of every kind, to truncate and mutate. */
+  private List<byte[]> samples() throws Exception {
+    ArrayDeque<Object> deque = new ArrayDeque<>(List.of("a", 1));
+    Object[] values = {
+      null, true, (byte) 1, (short) 2, 3, 4L, 5f, 6d, 'c', "text ☃",
+      new byte[] {1, 2}, new boolean[] {true}, new short[] {3}, new char[] {'x'}, new int[] {4},
+      new long[] {5}, new float[] {6}, new double[] {7}, new String[] {"s", null},
+      new Point[] {new Point(1, 2)}, TestTypes.nested(), Color.RED,
+      new Labeled("l", new Point(1, 2), List.of("t"), 0.5, Color.BLUE), new Pose(1, 2, 3, "f"),
+      new IllegalStateException("bad", new java.io.IOException("io")),
+      new FakeInfo(TestTypes.descriptor(ServiceInfoCodingTest.Annotated.class
+          .getMethod("moveTo", double.class, double.class).getAnnotations())),
+      new BigDecimal("-3.14159"), UUID.randomUUID(), Instant.now(), java.time.Duration.ZERO,
+      String.class, new Legacy("java"), deque, Map.of(List.of(1), new Holder(null)),
+    };
+    List<byte[]> samples = new ArrayList<>();
+    for (Object v : values) {
+      samples.add(codec.encode(v));
+    }
+    return samples;
+  }
+
+  private void assertMalformed(Codec c, byte[] bytes) {
+    try {
+      Object v = c.decode(bytes, loader());
+      fail("decoded " + v + " from " + HexFormat.of().formatHex(bytes, 0, Math.min(64, bytes.length)));
+    } catch (MalformedValueException e) {
+      assertFalse(e.getMessage().startsWith("internal decoding error"), e::getMessage);
+    } catch (TRADESerializationException e) {
+      fail("not reported as malformed: " + e, e);
+    }
+  }
+
+  /** Either a value or a checked decoding failure; never anything else. */
+  private void assertDecodesOrFailsCleanly(byte[] bytes) {
+    try {
+      codec.decode(bytes, loader());
+    } catch (TRADESerializationException e) {
+      assertFalse(e.getMessage().startsWith("internal decoding error"), e::getMessage);
+    }
+  }
+
+  @Test
+  void everyTruncationOfValidEncodingsIsMalformed() throws Exception {
+    int count = 0;
+    for (byte[] sample : samples()) {
+      for (int length = 0; length < sample.length; length++) {
+        assertMalformed(codec, Arrays.copyOf(sample, length));
+        count++;
+      }
+    }
+    assertTrue(count > 1000, "only " + count + " truncations");
+  }
+
+  @Test
+  void randomBytesNeverEscapeAsUncheckedExceptionsOrErrors() {
+    Random random = new Random(0x7EADE);
+    int malformed = 0;
+    int cases = 50_000;
+    for (int i = 0; i < cases; i++) {
+      byte[] bytes = new byte[random.nextInt(64)];
+      random.nextBytes(bytes);
+      if (bytes.length > 0 && i % 2 == 0) {
+        bytes[0] = (byte) (random.nextInt(0x51) & ALL_TAGS_MASK); // mostly valid tags: go deeper
+      }
+      try {
+        codec.decode(bytes, loader());
+      } catch (MalformedValueException e) {
+        malformed++;
+        assertFalse(e.getMessage().startsWith("internal decoding error"), e::getMessage);
+      } catch (TRADESerializationException e) {
+        // random bytes may spell a well-formed value naming an unknown or refused class
+        assertTrue(e.getMessage().contains("not known here")
+            || e.getMessage().contains(AllowList.CONFIG_KEY), e::getMessage);
+      }
+    }
+    assertTrue(malformed > cases * 9 / 10, malformed + " of " + cases);
+  }
+
+  @Test
+  void randomlyMutatedValidEncodingsFailCleanly() throws Exception {
+    Random random = new Random(42);
+    List<byte[]> samples = samples();
+    for (int i = 0; i < 20_000; i++) {
+      byte[] bytes = samples.get(random.nextInt(samples.size())).clone();
+      if (bytes.length == 0) {
+        continue;
+      }
+      for (int flips = 1 + random.nextInt(3); flips > 0; flips--) {
+        bytes[random.nextInt(bytes.length)] = (byte) random.nextInt(256);
+      }
+      assertDecodesOrFailsCleanly(bytes);
+    }
+  }
+
+  @Test
+  void hugeClaimedCountsAreRejectedBeforeAllocating() {
+    byte[] max = {(byte) 0xFF, (byte) 0xFF, (byte) 0xFF, (byte) 0xFF, 0x07}; // 2^31-1
+    int[] counted = {Tags.STRING, Tags.BYTES, Tags.BOOLEANS, Tags.SHORTS, Tags.CHARS, Tags.INTS,
+        Tags.LONGS, Tags.FLOATS, Tags.DOUBLES, Tags.LIST, Tags.SET, Tags.MAP, Tags.BIG_INTEGER,
+        Tags.JAVA};
+    for (int tag : counted) {
+      assertMalformed(codec, concat(new byte[] {(byte) tag}, max));
+      assertMalformed(codec, concat(new byte[] {(byte) tag, (byte) 0x80, (byte) 0x80, 0x01}, new byte[8]));
+    }
+    ByteSink array = new ByteSink();
+    array.writeByte(Tags.ARRAY);
+    array.writeText("java.lang.String");
+    array.writeBytes(max);
+    assertMalformed(codec, array.toByteArray());
+    ByteSink record = new ByteSink();
+    record.writeByte(Tags.RECORD);
+    record.writeText(Point.class.getName());
+    record.writeBytes(max);
+    assertMalformed(codec, record.toByteArray());
+    ByteSink frames = new ByteSink();
+    frames.writeByte(Tags.THROWABLE);
+    frames.writeText("x.Y");
+    frames.writeByte(0);
+    frames.writeBytes(max);
+    assertMalformed(codec, frames.toByteArray());
+  }
+
+  @Test
+  void limitsAreEnforced() throws Exception {
+    Codec small = TestTypes.codec(new Limits(1024, 8, 100, 2));
+    assertMalformed(small, codec.encode(new byte[2000])); // maxBytes
+    assertMalformed(small, codec.encode(new int[101])); // maxElements
+    assertMalformed(small, codec.encode("x".repeat(101)));
+    assertMalformed(small, codec.encode(new Exception("three frames or more")));
+    assertEquals(100, ((int[]) small.decode(codec.encode(new int[100]), loader())).length);
+    Object deep = null;
+    for (int i = 0; i < 9; i++) {
+      deep = List.of(deep == null ? List.of() : deep);
+    }
+    assertMalformed(small, codec.encode(deep)); // maxDepth
+  }
+
+  @Test
+  void depthBombsAreRejected() throws Exception {
+    int levels = 1_000_000;
+    byte[] lists = new byte[levels * 2 + 1];
+    for (int i = 0; i < levels; i++) {
+      lists[2 * i] = Tags.LIST;
+      lists[2 * i + 1] = 1;
+    }
+    assertMalformed(codec, lists);
+
+    ByteSink causes = new ByteSink();
+    for (int i = 0; i < 10_000; i++) {
+      causes.writeByte(Tags.THROWABLE);
+      causes.writeText("x.E");
+      causes.writeByte(0);
+      causes.writeByte(0);
+    }
+    causes.writeByte(Tags.NULL);
+    assertMalformed(codec, causes.toByteArray());
+
+    ByteSink holders = new ByteSink();
+    for (int i = 0; i < 10_000; i++) {
+      holders.writeByte(Tags.RECORD);
+      holders.writeText(Holder.class.getName());
+      holders.writeVarUInt(1);
+      holders.writeText("value");
+    }
+    holders.writeByte(Tags.NULL);
+    assertMalformed(codec, holders.toByteArray());
+
+    ArrayDeque<Object> javaDeep = new ArrayDeque<>(); // travels with Java serialization
+    for (int i = 0; i < 200; i++) {
+      ArrayDeque<Object> outer = new ArrayDeque<>();
+      outer.add(javaDeep);
+      javaDeep = outer;
+    }
+    assertMalformed(codec, codec.encode(javaDeep));
+  }
+
+  @Test
+  void malformedPrimitivesAreRejected() {
+    String[] hex = {
+      "0B", "19", "7F", "80", "FF", // unknown and reserved tags
+      "0A0180", "0A02C080", "0A03EDA080", "0A04F4908080", "0A02E282", "0A03E228A1", "0A01FF",
+      "0A8000", "0AFFFFFFFF0F", "0A808080808000", // non-minimal, too large, too long varints
+      "110102", // boolean array element 2
+      "4000", // big integer without bytes
+      "437FFFFFFFFFFFFFFF00000000", // instant out of range
+      "44000000000000000040000000", // nanoseconds out of range
+      "3106636F6D2E2E7800", // record type name "com..x"
+      "18013100", // object array with component type name "1"
+      "3303782E590000", // exception "x.Y", no message, no frames, and no cause value
+      "1803696E740100", // object array of primitive component type "int"
+    };
+    for (String h : hex) {
+      assertMalformed(codec, HexFormat.of().parseHex(h));
+    }
+    ByteSink tooManyDimensions = new ByteSink(); // its elements would need 256 dimensions
+    tooManyDimensions.writeByte(Tags.ARRAY);
+    tooManyDimensions.writeText("[".repeat(255) + "I");
+    tooManyDimensions.writeVarUInt(0);
+    assertMalformed(codec, tooManyDimensions.toByteArray());
+  }
+
+  @Test
+  void annotationEntryLengthMustMatch() throws Exception {
+    byte[] bytes = codec.encode(new FakeInfo(TestTypes.descriptor(ServiceInfoCodingTest.Annotated.class
+        .getMethod("plain").getAnnotations())));
+    // the descriptor without annotations ends with the annotation count: the first entry follows
+    int at = codec.encode(new FakeInfo(TestTypes.descriptor())).length;
+    assertEquals(2, bytes[at - 1]);
+    int length = ByteBuffer.wrap(bytes, at, 4).getInt();
+    for (int bad : new int[] {length - 1, length + 1, 100_000, 0, -5, Integer.MIN_VALUE}) {
+      byte[] changed = bytes.clone();
+      ByteBuffer.wrap(changed, at, 4).putInt(bad);
+      assertMalformed(codec, changed);
+    }
+  }
+
+  private static byte[] concat(byte[] a, byte[] b) {
+    byte[] c = Arrays.copyOf(a, a.length + b.length);
+    System.arraycopy(b, 0, c, a.length, b.length);
+    return c;
+  }
+}
