@@ -99,15 +99,20 @@ public record Announcement(int protocolVersion, String systemId, String containe
     return (a.getAddress() instanceof Inet6Address ? "[" + host + "]" : host) + ":" + a.getPort();
   }
 
-  /** For logs: {@code container 'arm' (id) of system 'diarc' at [10.0.0.5:4000], seq 7}. */
+  /** {@code [10.0.0.5:4000, [fd00::1]:4000]}. */
+  static String format(List<InetSocketAddress> list) {
+    StringBuilder out = new StringBuilder("[");
+    for (InetSocketAddress a : list) {
+      out.append(out.length() > 1 ? ", " : "").append(format(a));
+    }
+    return out.append(']').toString();
+  }
+
+  /** For logs: {@code container 'arm' (id) of system 'diarc' at [10.0.0.5:4000], seq 7, ...}. */
   @Override
   public String toString() {
-    StringBuilder at = new StringBuilder("[");
-    for (InetSocketAddress a : addresses) {
-      at.append(at.length() > 1 ? ", " : "").append(format(a));
-    }
     return "container '" + containerName + "' (" + containerId + ") of system '" + systemId
-        + "' at " + at.append(']') + ", seq " + sequence + ", time " + timestampMillis;
+        + "' at " + format(addresses) + ", seq " + sequence + ", time " + timestampMillis;
   }
 
   private static void checkAddress(InetSocketAddress a) {

@@ -122,7 +122,7 @@ final class Packets {
       throw new BadPacketException(Reason.TOO_SHORT, len + " bytes, less than " + MIN_PACKET);
     }
     if (!Arrays.equals(packet, 0, MAGIC.length, MAGIC, 0, MAGIC.length)) {
-      throw new BadPacketException(Reason.BAD_MAGIC, "not a TRADE announcement (no magic)");
+      throw new BadPacketException(Reason.BAD_MAGIC, "no TRADE magic bytes");
     }
     int version = packet[4] & 0xff;
     if (version != VERSION) {
