@@ -1,0 +1,187 @@
+package dev.trade.internal.discovery;
+
+import java.io.IOException;
+import java.lang.System.Logger;
+import java.lang.System.Logger.Level;
+import java.net.InetSocketAddress;
+import java.net.NetworkInterface;
+import java.nio.ByteBuffer;
+import java.nio.channels.DatagramChannel;
+import java.time.Duration;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.Executors;
+import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.LongAdder;
+import java.util.function.Supplier;
+
+/**
+ * The announcing half of {@link Discovery}: one daemon scheduler thread that sends an
+ * announcement per interface in a burst at start, then every interval, on request, and in answer
+ * to a newcomer.
+ *
+ * <p>Every send happens under {@code lock}, and so do the switches: once {@link #setOn(boolean)
+ * setOn(false)} or {@link #close()} has returned, nothing more is sent. Thread-safe.
+ */
+final class Announcer {
+  /** Delays of the start burst: a new container is heard within a few ms even if one is lost. */
+  static final long[] BURST_MILLIS = {0, 20, 50, 100, 200};
+  private static final Logger LOG = System.getLogger(Discovery.class.getName());
+
+  private final String systemId;
+  private final String containerId;
+  private final String containerName;
+  private final byte[] key;
+  private final InetSocketAddress target;
+  private final Supplier<List<InetSocketAddress>> addresses;
+  private final List<NetworkInterface> interfaces;
+  private final List<DatagramChannel> channels;
+  private final ScheduledExecutorService scheduler;
+  private final AtomicLong sequence = new AtomicLong();
+  private final LongAdder sent = new LongAdder();
+  private final AtomicBoolean answerPending = new AtomicBoolean();
+  private final Object lock = new Object();
+  // Guarded by lock: the last state logged per interface, so that only changes are logged.
+  private final Map<String, String> states = new HashMap<>();
+  private volatile boolean on; // Written under lock.
+  private boolean closed; // Guarded by lock.
+
+  /** @param channels one per interface, in the same order; closed by {@link #close()} */
+  Announcer(String systemId, String containerId, String containerName, byte[] key,
+      InetSocketAddress target, Supplier<List<InetSocketAddress>> addresses,
+      List<NetworkInterface> interfaces, List<DatagramChannel> channels, boolean on,
+      String threadName) {
+    this.systemId = systemId;
+    this.containerId = containerId;
+    this.containerName = containerName;
+    this.key = key;
+    this.target = target;
+    this.addresses = addresses;
+    this.interfaces = List.copyOf(interfaces);
+    this.channels = List.copyOf(channels);
+    this.on = on;
+    this.scheduler = Executors.newSingleThreadScheduledExecutor(r -> {
+      Thread t = new Thread(r, threadName);
+      t.setDaemon(true);
+      return t;
+    });
+  }
+
+  void start(Duration interval) {
+    scheduleBurst();
+    long ms = interval.toMillis();
+    scheduler.scheduleWithFixedDelay(this::announce, ms, ms, TimeUnit.MILLISECONDS);
+  }
+
+  /** Turning it on sends a burst, as at start. */
+  void setOn(boolean on) {
+    synchronized (lock) {
+      boolean was = this.on;
+      this.on = on;
+      if (on && !was && !closed) {
+        scheduleBurst();
+      }
+    }
+  }
+
+  boolean isOn() {
+    return on;
+  }
+
+  void announceNow() {
+    try {
+      scheduler.execute(this::announce);
+    } catch (RejectedExecutionException e) {
+      // Closed: nothing to announce.
+    }
+  }
+
+  /**
+   * Announces soon, in answer to a container heard for the first time: without it, a newcomer
+   * would learn about this container only at its next steady announcement, seconds away.
+   * Answers requested while one is pending share it, so a crowd of newcomers costs one packet.
+   */
+  void answer() {
+    if (answerPending.compareAndSet(false, true)) {
+      try {
+        scheduler.execute(() -> {
+          answerPending.set(false);
+          announce();
+        });
+      } catch (RejectedExecutionException e) {
+        // Closed: nothing to announce.
+      }
+    }
+  }
+
+  long sentCount() {
+    return sent.sum();
+  }
+
+  /** Stops the scheduler and closes the channels; waits for a send in progress. Idempotent. */
+  void close() {
+    synchronized (lock) {
+      closed = true;
+    }
+    scheduler.shutdownNow();
+    channels.forEach(Sockets::closeQuietly);
+  }
+
+  private void scheduleBurst() {
+    try {
+      for (long delay : BURST_MILLIS) {
+        scheduler.schedule(this::announce, delay, TimeUnit.MILLISECONDS);
+      }
+    } catch (RejectedExecutionException e) {
+      // Closed meanwhile.
+    }
+  }
+
+  /** One packet per interface. Never throws: a periodic task that throws is silently cancelled. */
+  private void announce() {
+    synchronized (lock) {
+      if (!on || closed) {
+        return;
+      }
+      List<InetSocketAddress> listen;
+      try {
+        listen = List.copyOf(addresses.get());
+      } catch (RuntimeException e) {
+        LOG.log(Level.WARNING, "Discovery could not get the listen addresses to announce", e);
+        return;
+      }
+      long now = System.currentTimeMillis();
+      for (int i = 0; i < channels.size(); i++) {
+        NetworkInterface nif = Interfaces.refresh(interfaces.get(i));
+        List<InetSocketAddress> mine = Interfaces.announceable(nif, listen);
+        if (mine.isEmpty()) {
+          note(nif, Level.INFO, "nothing to announce: " + (listen.isEmpty()
+              ? "no listen addresses" : "none of the listen addresses " + Announcement.format(listen) + " is on it"));
+          continue;
+        }
+        Announcement a = new Announcement(Packets.VERSION, systemId, containerId, containerName,
+            mine, sequence.incrementAndGet(), now);
+        try {
+          channels.get(i).send(ByteBuffer.wrap(a.encode(key)), target);
+          sent.increment();
+          note(nif, Level.INFO, "announcing " + Announcement.format(mine) + " as '" + containerName + "'");
+        } catch (IOException | RuntimeException e) {
+          note(nif, Level.WARNING, "cannot send: " + e);
+        }
+      }
+    }
+  }
+
+  // Caller holds lock.
+  private void note(NetworkInterface nif, Level level, String state) {
+    if (!state.equals(states.put(nif.getName(), state))) {
+      LOG.log(level, "Discovery on {0} to {1}: {2}", nif.getName(), Announcement.format(target),
+          state);
+    }
+  }
+}

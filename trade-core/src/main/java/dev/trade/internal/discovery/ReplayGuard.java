@@ -1,0 +1,89 @@
+package dev.trade.internal.discovery;
+
+import dev.trade.internal.discovery.BadPacketException.Reason;
+import java.time.Duration;
+import java.util.LinkedHashMap;
+import java.util.Map;
+
+/**
+ * Drops authenticated announcements that were heard before or are too old to be current.
+ *
+ * <p>Two checks, in this order:
+ * <ol>
+ *   <li><b>Clock:</b> a timestamp more than {@code maxClockSkew} from our clock, either way, is
+ *       {@link Reason#CLOCK_SKEW}. This bounds how long a captured packet can be replayed to a
+ *       container that has never heard (or has forgotten) its sender. It also rejects every packet
+ *       of a host whose clock is off by more than the tolerance, so the log line says "synchronise
+ *       the clocks", and {@link Duration#ZERO} turns the check off for hosts that cannot.
+ *   <li><b>Sequence:</b> per sender container id, the highest sequence accepted so far; a packet
+ *       whose sequence is not above it is {@link Reason#REPLAYED}. Container ids are unique per
+ *       incarnation, so a restarted container starts a new count instead of being taken for a
+ *       replay.
+ * </ol>
+ * Memory is bounded: beyond {@code maxSenders} the sender heard from least recently is forgotten
+ * (only packets with a valid HMAC get here, so only members of the system can fill the table).
+ * A forgotten sender's older packets pass the sequence check again, but not the clock check.
+ *
+ * <p>Not thread-safe: {@link Discovery} uses it from its receive thread only.
+ */
+final class ReplayGuard {
+  static final int DEFAULT_MAX_SENDERS = 4096;
+  static final Duration DEFAULT_MAX_CLOCK_SKEW = Duration.ofSeconds(30);
+
+  private final long maxSkewMillis;
+  private final Map<String, Long> highest;
+
+  /**
+   * @param maxSenders how many senders to remember, at least 1
+   * @param maxClockSkew the tolerance either way; zero turns the clock check off
+   */
+  ReplayGuard(int maxSenders, Duration maxClockSkew) {
+    if (maxSenders < 1) {
+      throw new IllegalArgumentException("maxSenders " + maxSenders + " < 1");
+    }
+    if (maxClockSkew.isNegative()) {
+      throw new IllegalArgumentException("maxClockSkew " + maxClockSkew + " is negative");
+    }
+    this.maxSkewMillis = maxClockSkew.toMillis();
+    // Access order: a sender that keeps announcing is never the one evicted.
+    this.highest = new LinkedHashMap<>(64, 0.75f, true) {
+      private static final long serialVersionUID = 1L;
+
+      @Override
+      protected boolean removeEldestEntry(Map.Entry<String, Long> eldest) {
+        return size() > maxSenders;
+      }
+    };
+  }
+
+  /**
+   * Accepts {@code a} and remembers its sequence, or throws without remembering anything.
+   *
+   * @param nowMillis our clock, ms since the epoch
+   * @return whether its sender was not remembered before: new, or forgotten
+   * @throws BadPacketException {@link Reason#CLOCK_SKEW} or {@link Reason#REPLAYED}
+   */
+  boolean check(Announcement a, long nowMillis) throws BadPacketException {
+    if (maxSkewMillis > 0) {
+      // Both are >= 0 (Announcement checks its timestamp), so the difference cannot overflow.
+      long skew = a.timestampMillis() - nowMillis;
+      if (Math.abs(skew) > maxSkewMillis) {
+        throw new BadPacketException(Reason.CLOCK_SKEW, "timestamp " + Math.abs(skew) + " ms "
+            + (skew < 0 ? "behind" : "ahead of") + " our clock (tolerance " + maxSkewMillis
+            + " ms): an old packet replayed, or clocks not synchronised");
+      }
+    }
+    Long last = highest.get(a.containerId());
+    if (last != null && a.sequence() <= last) {
+      throw new BadPacketException(Reason.REPLAYED, "sequence " + a.sequence() + " of container '"
+          + a.containerName() + "' (" + a.containerId() + "), already at " + last);
+    }
+    highest.put(a.containerId(), a.sequence());
+    return last == null;
+  }
+
+  /** How many senders are remembered. */
+  int size() {
+    return highest.size();
+  }
+}

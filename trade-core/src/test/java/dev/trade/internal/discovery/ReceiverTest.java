@@ -1,0 +1,82 @@
+package dev.trade.internal.discovery;
+
+import static dev.trade.internal.discovery.Fixtures.KEY;
+import static dev.trade.internal.discovery.Fixtures.SYSTEM;
+import static dev.trade.internal.discovery.Fixtures.announcement;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import dev.trade.internal.discovery.BadPacketException.Reason;
+import java.io.IOException;
+import java.net.InetAddress;
+import java.nio.channels.DatagramChannel;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicInteger;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+
+/** The receive pipeline, packet by packet, without the network (the channel is never bound). */
+class ReceiverTest {
+  private static final InetAddress FROM = InetAddress.getLoopbackAddress();
+
+  private final Recorder recorder = new Recorder();
+  private final AtomicInteger newcomers = new AtomicInteger();
+  private final List<Announcement> delivered = new ArrayList<>();
+  private Receiver receiver;
+
+  @AfterEach
+  void close() {
+    if (receiver != null) {
+      receiver.close();
+    }
+  }
+
+  @Test
+  void ownRepeatedAndNewAnnouncements() throws IOException {
+    receiver = receiver((a, from) -> delivered.add(a));
+    byte[] own = announcement("me", 1).encode(KEY);
+    receiver.handle(own, own.length, FROM);
+    byte[] first = announcement("other", 1).encode(KEY);
+    receiver.handle(first, first.length, FROM);
+    receiver.handle(first, first.length, FROM);
+    byte[] second = announcement("other", 2).encode(KEY);
+    receiver.handle(second, second.length, FROM);
+
+    assertEquals(List.of(1L, 2L), delivered.stream().map(Announcement::sequence).toList());
+    assertEquals(1, newcomers.get(), "only the first announcement of a container is news");
+    assertEquals(1L, receiver.dropCounts().get(Reason.OWN));
+    assertEquals(1L, receiver.dropCounts().get(Reason.REPLAYED));
+    assertEquals(1, recorder.drops(Reason.REPLAYED));
+    assertEquals(Reason.values().length, receiver.dropCounts().size());
+  }
+
+  @Test
+  void aFailingListenerDoesNotStopDelivery() throws IOException {
+    receiver = receiver((a, from) -> {
+      delivered.add(a);
+      throw new IllegalStateException("listener bug");
+    });
+    byte[] first = announcement("other", 1).encode(KEY);
+    byte[] second = announcement("other", 2).encode(KEY);
+    receiver.handle(first, first.length, FROM);
+    receiver.handle(second, second.length, FROM);
+    assertEquals(2, delivered.size());
+  }
+
+  @Test
+  void aPacketFromTheFarPastIsAClockSkewDrop() throws IOException {
+    receiver = receiver((a, from) -> delivered.add(a));
+    byte[] old = new Announcement(1, SYSTEM, "other", "n", List.of(), 1,
+        System.currentTimeMillis() - 3_600_000).encode(KEY);
+    receiver.handle(old, old.length, FROM);
+    assertEquals(List.of(), delivered);
+    assertEquals(1L, receiver.dropCounts().get(Reason.CLOCK_SKEW));
+  }
+
+  private Receiver receiver(Discovery.Listener listener) throws IOException {
+    return new Receiver(DatagramChannel.open(), SYSTEM, "me", KEY, listener,
+        newcomers::incrementAndGet, recorder, Duration.ofSeconds(30), Duration.ofSeconds(60), true,
+        "test-receiver");
+  }
+}

@@ -1,0 +1,72 @@
+package dev.trade.internal.discovery;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trade.internal.discovery.BadPacketException.Reason;
+import java.time.Duration;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+class ReplayGuardTest {
+  private static final long NOW = 1_700_000_000_000L;
+  private final ReplayGuard guard = new ReplayGuard(4096, Duration.ofSeconds(30));
+
+  @Test
+  void acceptsGrowingSequencesAndRejectsRepeatsAndOlderOnes() throws BadPacketException {
+    assertTrue(guard.check(at("a", 5, NOW), NOW));
+    assertFalse(guard.check(at("a", 6, NOW), NOW));
+    assertEquals("sequence 6 of container 'name-a' (a), already at 6",
+        rejected(Reason.REPLAYED, at("a", 6, NOW)).getMessage());
+    rejected(Reason.REPLAYED, at("a", 2, NOW));
+    assertTrue(guard.check(at("b", 1, NOW), NOW), "senders are counted separately");
+  }
+
+  @Test
+  void rejectsTimestampsBeyondTheToleranceEitherWay() throws BadPacketException {
+    assertEquals("timestamp 30001 ms behind our clock (tolerance 30000 ms): an old packet"
+        + " replayed, or clocks not synchronised",
+        rejected(Reason.CLOCK_SKEW, at("a", 1, NOW - 30_001)).getMessage());
+    rejected(Reason.CLOCK_SKEW, at("a", 1, NOW + 30_001));
+    guard.check(at("a", 1, NOW - 30_000), NOW);
+    guard.check(at("a", 2, NOW + 30_000), NOW);
+  }
+
+  @Test
+  void aRejectedPacketLeavesNoTrace() throws BadPacketException {
+    rejected(Reason.CLOCK_SKEW, at("a", 9, NOW - 60_000));
+    assertEquals(0, guard.size());
+    assertTrue(guard.check(at("a", 1, NOW), NOW));
+  }
+
+  @Test
+  void zeroToleranceTurnsTheClockCheckOff() throws BadPacketException {
+    ReplayGuard unsynced = new ReplayGuard(10, Duration.ZERO);
+    unsynced.check(at("a", 1, 0), NOW);
+    unsynced.check(at("a", 2, NOW * 2), NOW);
+  }
+
+  @Test
+  void forgetsTheSenderHeardLeastRecentlyBeyondTheBound() throws BadPacketException {
+    ReplayGuard small = new ReplayGuard(2, Duration.ofSeconds(30));
+    small.check(at("a", 5, NOW), NOW);
+    small.check(at("b", 5, NOW), NOW);
+    small.check(at("a", 6, NOW), NOW); // a is now the most recent
+    small.check(at("c", 5, NOW), NOW); // evicts b
+    assertEquals(2, small.size());
+    assertThrows(BadPacketException.class, () -> small.check(at("a", 6, NOW), NOW));
+    assertTrue(small.check(at("b", 1, NOW), NOW), "b was forgotten, so it is new again");
+  }
+
+  private BadPacketException rejected(Reason reason, Announcement a) {
+    BadPacketException e = assertThrows(BadPacketException.class, () -> guard.check(a, NOW));
+    assertEquals(reason, e.reason());
+    return e;
+  }
+
+  private static Announcement at(String id, long sequence, long timestamp) {
+    return new Announcement(1, "s", id, "name-" + id, List.of(), sequence, timestamp);
+  }
+}
