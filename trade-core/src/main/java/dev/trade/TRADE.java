@@ -114,6 +114,16 @@ public final class TRADE {
     getDefaultContainer().registerNotificationNowOrWhenJoined(listener, constraints, callbackMethod);
   }
 
+  /** See {@link TRADEContainer#setDiscovery(boolean)}. */
+  public static void setDiscovery(boolean on) {
+    getDefaultContainer().setDiscovery(on);
+  }
+
+  /** See {@link TRADEContainer#setBroadcast(boolean)}. */
+  public static void setBroadcast(boolean on) {
+    getDefaultContainer().setBroadcast(on);
+  }
+
   /** See {@link TRADEContainer#getAvailableServices(Class, TRADEServiceConstraints)}. */
   public static Collection<TRADEServiceInfo> getAvailableServices(
       Class<? extends Annotation> annotation, TRADEServiceConstraints constraints) {

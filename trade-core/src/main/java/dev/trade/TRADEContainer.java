@@ -222,6 +222,39 @@ public final class TRADEContainer implements AutoCloseable {
     return (constraints == null ? new TRADEServiceConstraints() : constraints).toQuery();
   }
 
+  /**
+   * Switches multicast discovery on or off at run time: while on, this container listens for the
+   * announcements of containers of its system ({@code TRADESYSID}, {@code CREDENTIALS}) and connects
+   * to them. See docs/discovery.md.
+   *
+   * @throws java.io.UncheckedIOException if discovery cannot open its socket
+   */
+  public void setDiscovery(boolean on) {
+    checkOpen();
+    core.setDiscovery(on);
+  }
+
+  /**
+   * Switches announcing this container by multicast on or off at run time; while on, it accepts
+   * connections (on {@code SERVERIPS}, or where the discovery range reaches).
+   *
+   * @throws java.io.UncheckedIOException if a socket cannot be opened
+   */
+  public void setBroadcast(boolean on) {
+    checkOpen();
+    core.setBroadcast(on);
+  }
+
+  /** Whether discovery is on. */
+  public boolean isDiscovering() {
+    return core.isDiscovering();
+  }
+
+  /** Whether this container announces itself. */
+  public boolean isBroadcasting() {
+    return core.isBroadcasting();
+  }
+
   /** The ids of the containers this one has a direct, authenticated link to right now. */
   public List<String> getNeighbours() {
     return core.neighbours();

@@ -51,7 +51,9 @@ public final class ContainerCore implements ServiceCaller {
   private final Codec codec;
   private final ValueCopier copier;
   private final long defaultTimeoutNanos;
-  private final Network network;
+  private final Limits limits;
+  // Written once under this' lock; networking may start later, when discovery is switched on.
+  private volatile Network network;
   private volatile boolean closed;
 
   /**
@@ -73,14 +75,16 @@ public final class ContainerCore implements ServiceCaller {
     for (String pattern : settings.serializationAllowList()) {
       allowList.add(pattern);
     }
-    Limits limits = new Limits(settings.maxFrameSize(), Limits.DEFAULT.maxDepth(),
+    this.limits = new Limits(settings.maxFrameSize(), Limits.DEFAULT.maxDepth(),
         Limits.DEFAULT.maxElements(), Limits.DEFAULT.maxStackFrames());
     this.codec = new Codec(allowList, limits, infos);
     this.copier = settings.copyDataForLocalInvokes() ? codec::copy : null;
     this.defaultTimeoutNanos = settings.callTimeout().toNanos();
     List<CallLink> hostLinks = new ArrayList<>();
     this.hostChain = new CallChain(hostLinks, new LocalInvoker(registry));
-    this.network = networked(settings) ? startNetwork(limits) : null;
+    if (networked(settings)) {
+      network = startNetwork();
+    }
   }
 
   /** Service tables travel as descriptors and stay descriptors. */
@@ -101,7 +105,7 @@ public final class ContainerCore implements ServiceCaller {
         || s.startDiscovery() || s.startBroadcast();
   }
 
-  private Network startNetwork(Limits limits) {
+  private Network startNetwork() {
     Codec tables = new Codec(allowList, limits, DESCRIPTORS);
     Network n = new Network(settings, uuid, name, host, registry, codec, tables, new Network.Host() {
       @Override
@@ -143,14 +147,61 @@ public final class ContainerCore implements ServiceCaller {
     registry.deregister(provider);
   }
 
+  /** This container's networking, started now if it was not running. */
+  private synchronized Network network() {
+    if (network == null) {
+      network = startNetwork();
+    }
+    return network;
+  }
+
+  /**
+   * Switches multicast discovery of other containers on or off (the TRADE paper's "turn on
+   * discovery").
+   *
+   * @throws UncheckedIOException if discovery cannot open its socket
+   */
+  public void setDiscovery(boolean on) {
+    if (on || network != null) {
+      try {
+        network().setDiscovery(on);
+      } catch (IOException e) {
+        throw new UncheckedIOException("cannot start discovery: " + e.getMessage(), e);
+      }
+    }
+  }
+
+  /** Switches announcing this container by multicast on or off. */
+  public void setBroadcast(boolean on) {
+    if (on || network != null) {
+      try {
+        network().setBroadcast(on);
+      } catch (IOException e) {
+        throw new UncheckedIOException("cannot start announcing: " + e.getMessage(), e);
+      }
+    }
+  }
+
+  public boolean isDiscovering() {
+    Network n = network;
+    return n != null && n.isDiscovering();
+  }
+
+  public boolean isBroadcasting() {
+    Network n = network;
+    return n != null && n.isBroadcasting();
+  }
+
   /** The addresses this container accepts connections on (empty without networking). */
   public List<InetSocketAddress> listenAddresses() {
-    return network == null ? List.of() : network.listenAddresses();
+    Network n = network;
+    return n == null ? List.of() : n.listenAddresses();
   }
 
   /** Ids of the containers with a direct link to this one. */
   public List<String> neighbours() {
-    return network == null ? List.of() : network.neighbours();
+    Network n = network;
+    return n == null ? List.of() : n.neighbours();
   }
 
   @Override
@@ -186,7 +237,8 @@ public final class ContainerCore implements ServiceCaller {
     if (d.containerId().equals(id)) {
       return callLocal(d, returnType, normalized, deadline);
     }
-    if (network == null) {
+    Network n = network;
+    if (n == null) {
       throw LocalInvoker.unavailable(d, "this container has no network");
     }
     ClassLoader loader = callerLoader(returnType);
@@ -195,7 +247,7 @@ public final class ContainerCore implements ServiceCaller {
       throw new TRADEBadArgumentsException("Service " + d.signature() + " takes "
           + d.parameterTypeNames().size() + " arguments but got " + normalized.length);
     }
-    return Returns.convert(d, returnType, network.call(d, normalized, deadline, loader));
+    return Returns.convert(d, returnType, n.call(d, normalized, deadline, loader));
   }
 
   private static ClassLoader callerLoader(Class<?> returnType) {
@@ -233,8 +285,10 @@ public final class ContainerCore implements ServiceCaller {
     if (!closed) {
       closed = true;
       registry.deregisterAll();
-      if (network != null) {
-        network.close();
+      synchronized (this) {
+        if (network != null) {
+          network.close();
+        }
       }
     }
   }

@@ -3,6 +3,7 @@ package dev.trade.internal.net;
 import dev.trade.TRADEException;
 import dev.trade.internal.call.Invocation;
 import dev.trade.internal.codec.Codec;
+import dev.trade.internal.config.DiscoveryRange;
 import dev.trade.internal.config.PeerAddress;
 import dev.trade.internal.config.Settings;
 import dev.trade.internal.registry.LocalService;
@@ -56,6 +57,8 @@ public final class Network implements AutoCloseable {
   private final Replication replication;
   private final Map<UUID, Link> links = new ConcurrentHashMap<>();
   private final Map<InetSocketAddress, UUID> dialled = new ConcurrentHashMap<>();
+  // Guarded by this.
+  private Finder finder;
   private volatile boolean closed;
 
   /**
@@ -107,22 +110,88 @@ public final class Network implements AutoCloseable {
    * @throws IOException if a listen address cannot be bound (the message names it)
    */
   public void start() throws IOException {
-    if (settings.startAcceptingConnections()) {
-      List<PeerAddress> listen = settings.serverAddresses().isEmpty()
-          ? List.of(new PeerAddress("127.0.0.1", 0)) : settings.serverAddresses();
-      for (PeerAddress a : listen) {
-        try {
-          connector.listen(new InetSocketAddress(a.host(), a.port()));
-        } catch (IOException e) {
-          throw new IOException("cannot listen on SERVERIPS address " + a + ": " + e.getMessage(), e);
-        }
-      }
+    if (settings.startAcceptingConnections() || settings.startBroadcast()) {
+      listen();
     }
     for (PeerAddress a : settings.connectContainers()) {
       connector.keepConnected(new InetSocketAddress(a.host(), a.port()));
     }
     long beat = settings.heartbeatInterval().toMillis();
     timer.scheduleAtFixedRate(this::heartbeat, beat, beat, TimeUnit.MILLISECONDS);
+    if (settings.startDiscovery() || settings.startBroadcast()) {
+      finder(settings.startBroadcast(), settings.startDiscovery());
+    }
+  }
+
+  /**
+   * Listens on SERVERIPS, or where discovery can reach: loopback for the {@code localhost} range,
+   * every interface for {@code subnet} (announced per interface, never as a wildcard).
+   */
+  private synchronized void listen() throws IOException {
+    if (!connector.listening().isEmpty()) {
+      return;
+    }
+    List<PeerAddress> listen = settings.serverAddresses();
+    if (listen.isEmpty()) {
+      listen = List.of(new PeerAddress(
+          settings.discoveryRange() == DiscoveryRange.SUBNET ? "0.0.0.0" : "127.0.0.1", 0));
+    }
+    for (PeerAddress a : listen) {
+      try {
+        connector.listen(new InetSocketAddress(a.host(), a.port()));
+      } catch (IOException e) {
+        throw new IOException("cannot listen on SERVERIPS address " + a + ": " + e.getMessage(), e);
+      }
+    }
+  }
+
+  private synchronized Finder finder(boolean broadcast, boolean discover) throws IOException {
+    if (finder == null && !closed) {
+      finder = new Finder(settings, self, name, connector::listening, links::containsKey,
+          connector, timer, broadcast, discover);
+    }
+    return finder;
+  }
+
+  /**
+   * Turns multicast discovery (listening for announcements and connecting) on or off at run time.
+   *
+   * @throws IOException if discovery has to start and cannot open its socket
+   */
+  public void setDiscovery(boolean on) throws IOException {
+    Finder f = finder(false, on);
+    if (f != null) {
+      f.setDiscovery(on);
+    }
+  }
+
+  /**
+   * Turns announcing this container on or off at run time (it then accepts connections, if it did
+   * not already).
+   *
+   * @throws IOException if a listen socket or the discovery socket cannot be opened
+   */
+  public void setBroadcast(boolean on) throws IOException {
+    if (on) {
+      listen();
+    }
+    Finder f = finder(on, false);
+    if (f != null) {
+      f.setBroadcast(on);
+      if (on) {
+        f.announceNow();
+      }
+    }
+  }
+
+  /** Whether this container listens for announcements. */
+  public synchronized boolean isDiscovering() {
+    return finder != null && finder.isDiscovering();
+  }
+
+  /** Whether this container announces itself. */
+  public synchronized boolean isBroadcasting() {
+    return finder != null && finder.isBroadcasting();
   }
 
   /** The addresses this container accepts connections on. */
@@ -284,6 +353,11 @@ public final class Network implements AutoCloseable {
       return;
     }
     closed = true;
+    synchronized (this) {
+      if (finder != null) {
+        finder.close();
+      }
+    }
     connector.close();
     byte[] goodbye = Frames.finish(Frames.start(Wire.GOODBYE, 0));
     for (Link l : links.values()) {
