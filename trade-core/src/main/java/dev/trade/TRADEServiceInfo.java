@@ -138,6 +138,15 @@ public final class TRADEServiceInfo implements Serializable {
     return descriptor.host();
   }
 
+  /**
+   * How many links a call crosses from the container this info was obtained from to the providing
+   * one: 0 for its own services, 1 for a directly connected container, more through forwarding;
+   * -1 when the service is not known there (any more).
+   */
+  public int getDistance() {
+    return caller.distance(descriptor);
+  }
+
   /** Whether the service is provided by the container this info was obtained from. */
   public boolean isLocal() {
     return descriptor.containerId().equals(caller.containerId());

@@ -71,6 +71,9 @@ class ForwardingTest {
 
     assertEquals("A answers C", find(c, "gA").call(String.class, "C"));
     assertEquals("C answers A", find(a, "gC").call(String.class, "A"));
+    assertEquals(2, find(c, "gA").getDistance());
+    assertEquals(1, find(b, "gA").getDistance());
+    assertEquals(0, find(a, "gA").getDistance());
 
     // An update made after the fact travels the chain too, and so does its removal.
     Named late = new Named("C2");

@@ -12,6 +12,12 @@ public interface ServiceCaller {
   String containerId();
 
   /**
+   * How many links separate this container from the service's (0: this one), or -1 when the
+   * service is not known here (any more).
+   */
+  int distance(ServiceDescriptor service);
+
+  /**
    * Calls the service and returns its result as {@code returnType}.
    *
    * @param timeoutNanos how long to wait for a remote reply; non-positive means the default

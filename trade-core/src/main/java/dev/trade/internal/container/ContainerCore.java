@@ -17,6 +17,7 @@ import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.codec.Limits;
 import dev.trade.internal.config.Settings;
 import dev.trade.internal.net.Network;
+import dev.trade.internal.registry.Entry;
 import dev.trade.internal.registry.LocalService;
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
@@ -227,6 +228,12 @@ public final class ContainerCore implements ServiceCaller {
 
   public boolean isClosed() {
     return closed;
+  }
+
+  @Override
+  public int distance(ServiceDescriptor d) {
+    Entry e = registry.entry(d);
+    return e == null ? -1 : e.distance();
   }
 
   @Override

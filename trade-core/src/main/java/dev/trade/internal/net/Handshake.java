@@ -34,10 +34,14 @@ final class Handshake {
   private static final SecureRandom RANDOM = new SecureRandom();
 
   /** Who we are, as told to peers. */
-  record Identity(String systemId, UUID containerId, String name, String host, List<String> addresses) {}
+  record Identity(String systemId, UUID containerId, String name, String host, List<String> addresses,
+      boolean encrypt) {}
 
-  /** Who the peer proved to be. */
-  record Peer(UUID containerId, String name, String host, List<String> addresses) {}
+  /** Who the peer proved to be, and the link's frame cipher when frames are encrypted (else null). */
+  record Peer(UUID containerId, String name, String host, List<String> addresses, FrameCipher cipher) {}
+
+  /** HELLO flag: this side encrypts frames after the handshake (USEENCRYPTION). */
+  private static final int FLAG_ENCRYPT = 1;
 
   /** The handshake failed; {@code reason} is one of the {@code Wire.REFUSE_*} codes or 0 (I/O). */
   static final class Failure extends Exception {
@@ -75,6 +79,7 @@ final class Handshake {
     Peer peer;
     byte[] peerNonce = new byte[NONCE];
     String peerSystem;
+    int peerFlags;
     try {
       byte[] magic = new byte[4];
       hello.get(magic);
@@ -98,7 +103,8 @@ final class Handshake {
         addresses.add(string(hello));
       }
       hello.get(peerNonce);
-      peer = new Peer(id, name, host, addresses);
+      peerFlags = hello.get() & 0xff;
+      peer = new Peer(id, name, host, addresses, null);
     } catch (RuntimeException e) { // BufferUnderflow, bad UTF-8 length...
       throw refuse(out, Wire.REFUSE_MALFORMED, "malformed HELLO: " + e);
     }
@@ -109,6 +115,11 @@ final class Handshake {
     if (peer.containerId().equals(self.containerId())) {
       throw refuse(out, Wire.REFUSE_SELF, "connected to itself");
     }
+    boolean peerEncrypts = (peerFlags & FLAG_ENCRYPT) != 0;
+    if (peerEncrypts != self.encrypt()) {
+      throw refuse(out, Wire.REFUSE_ENCRYPTION, "USEENCRYPTION differs: " + self.encrypt()
+          + " here, " + peerEncrypts + " at " + peer.name());
+    }
     writeFrame(out, Wire.AUTH, mac(nonce, peerNonce, self.containerId(), peer.containerId()));
     ByteBuffer auth = readFrame(in, Wire.AUTH);
     byte[] proof = new byte[auth.remaining()];
@@ -117,7 +128,11 @@ final class Handshake {
     if (!MessageDigest.isEqual(proof, expected)) {
       throw refuse(out, Wire.REFUSE_CREDENTIALS, "authentication failed: wrong CREDENTIALS on one side");
     }
-    return peer;
+    if (!self.encrypt()) {
+      return peer;
+    }
+    return new Peer(peer.containerId(), peer.name(), peer.host(), peer.addresses(),
+        new FrameCipher(key, self.containerId(), peer.containerId(), nonce, peerNonce));
   }
 
   private byte[] hello(byte[] nonce) throws IOException {
@@ -136,6 +151,7 @@ final class Handshake {
       writeString(out, a);
     }
     out.write(nonce);
+    out.writeByte(self.encrypt() ? FLAG_ENCRYPT : 0);
     return bytes.toByteArray();
   }
 

@@ -7,6 +7,8 @@ import java.io.EOFException;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.net.Socket;
+import java.security.GeneralSecurityException;
+import java.util.Arrays;
 import java.util.ArrayDeque;
 import java.util.UUID;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -37,6 +39,7 @@ final class Link {
   private final DataInputStream in;
   private final OutputStream out;
   private final int maxFrame;
+  private final FrameCipher cipher;
   private final ArrayDeque<byte[]> queue = new ArrayDeque<>();
   private final AtomicBoolean closed = new AtomicBoolean();
   // Guarded by queue.
@@ -50,6 +53,7 @@ final class Link {
     this.peerName = peer.name();
     this.initiatedHere = initiatedHere;
     this.maxFrame = maxFrame;
+    this.cipher = peer.cipher();
     this.in = new DataInputStream(new BufferedInputStream(socket.getInputStream(), 64 * 1024));
     this.out = new BufferedOutputStream(socket.getOutputStream(), 64 * 1024);
   }
@@ -81,7 +85,8 @@ final class Link {
     byte[] next = frame;
     try {
       while (true) {
-        out.write(next);
+        // Sealing here, in write order, keeps the cipher's frame counter in step with the wire.
+        out.write(cipher == null ? next : cipher.seal(next));
         synchronized (queue) {
           next = queue.poll();
         }
@@ -120,19 +125,38 @@ final class Link {
           reason = "connection closed by " + peerName;
           break;
         }
-        if (length < 2 || length > maxFrame) {
+        int overhead = cipher == null ? 0 : FrameCipher.TAG_BYTES;
+        if (length < 2 + overhead || length > maxFrame + overhead) {
           reason = "malformed frame from " + peerName + ": length " + length
               + " (limit MAXFRAMESIZE=" + maxFrame + ")";
           break;
         }
-        int version = in.readUnsignedByte();
-        int type = in.readUnsignedByte();
+        int version;
+        int type;
+        byte[] payload;
+        if (cipher == null) {
+          version = in.readUnsignedByte();
+          type = in.readUnsignedByte();
+          payload = new byte[length - 2];
+          in.readFully(payload);
+        } else {
+          byte[] sealed = new byte[length];
+          in.readFully(sealed);
+          byte[] body;
+          try {
+            body = cipher.open(sealed);
+          } catch (GeneralSecurityException e) {
+            reason = "frame from " + peerName + " failed decryption (altered or out of order)";
+            break;
+          }
+          version = body[0] & 0xff;
+          type = body[1] & 0xff;
+          payload = Arrays.copyOfRange(body, 2, body.length);
+        }
         if (version != Wire.VERSION) {
           reason = "frame of protocol version " + version + " from " + peerName;
           break;
         }
-        byte[] payload = new byte[length - 2];
-        in.readFully(payload);
         lastReceived = System.nanoTime();
         handler.frame(this, type, payload);
       }

@@ -87,7 +87,7 @@ public final class Network implements AutoCloseable {
     }, workers, timer);
     this.replication = new Replication(self, registry, tableCodec, links, calls);
     Handshake handshake = new Handshake(new Handshake.Identity(settings.tradeSysId(), self, name,
-        host, List.of()), settings.credentials());
+        host, List.of(), settings.useEncryption()), settings.credentials());
     this.connector = new Connector(handshake, (int) settings.clientSocketTimeout().toMillis(),
         workers, timer, new Connector.Sink() {
           @Override

@@ -39,6 +39,7 @@ final class Wire {
   static final int REFUSE_CREDENTIALS = 3;
   static final int REFUSE_SELF = 4;
   static final int REFUSE_MALFORMED = 5;
+  static final int REFUSE_ENCRYPTION = 6;
 
   /** Forwarded frames die after this many hops, whatever the routing tables say. */
   static final int MAX_HOPS = 16;

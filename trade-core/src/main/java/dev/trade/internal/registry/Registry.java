@@ -337,10 +337,9 @@ public final class Registry {
     return snapshot.ordered;
   }
 
-  /** Whether the service is still known (local and active, or listed by its container). */
-  public boolean contains(ServiceDescriptor d) {
-    Entry e = snapshot.byKey.get(new Key(d.containerId(), d.serviceId()));
-    return e != null;
+  /** The entry of a known service, or null when it is not (or no longer) known here. */
+  public Entry entry(ServiceDescriptor d) {
+    return snapshot.byKey.get(new Key(d.containerId(), d.serviceId()));
   }
 
   private ServiceDescriptor descriptor(String name, List<String> names, List<String> types,
