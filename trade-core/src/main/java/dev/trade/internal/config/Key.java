@@ -17,7 +17,7 @@ import java.util.stream.Collectors;
  * shipped {@code config/trade.properties} and {@code docs/configuration.md} follow it.
  */
 enum Key {
-  CONTAINERNAME("", Values::text, Values::plain),
+  CONTAINERNAME("", Values::containerName, Values::plain),
   STARTDISCOVERY("false", Values::bool, Values::plain),
   STARTBROADCAST("false", Values::bool, Values::plain),
   MCAST_ADDR("230.1.1.1", Values::multicast, Values::hostAddress),
@@ -33,7 +33,7 @@ enum Key {
   CALLCHECKTIME("5000", Values.millis(1), Values::millisText),
   USEENCRYPTION("false", Values::bool, Values::plain),
   CREDENTIALS("diarcUser", Values::text, Values::plain),
-  TRADESYSID("diarc", Values::text, Values::plain),
+  TRADESYSID("diarc", Values::systemId, Values::plain),
   COPYDATAFORLOCALINVOKES("false", Values::bool, Values::plain),
   CALLTIMEOUT("30000", Values.millis(1), Values::millisText),
   HEARTBEATINTERVAL("250", Values.millis(1), Values::millisText),

@@ -38,6 +38,24 @@ final class Values {
     return s;
   }
 
+  /** A system id: it travels in every announcement and handshake, in at most 64 UTF-8 bytes. */
+  static Object systemId(String s) {
+    return bounded(s, 1, 64, "a system id of 1 to 64 bytes without control characters");
+  }
+
+  /** A container name: it travels in announcements and handshakes, in at most 255 UTF-8 bytes. */
+  static Object containerName(String s) {
+    return bounded(s, 0, 255, "a name of at most 255 bytes without control characters");
+  }
+
+  private static Object bounded(String s, int min, int max, String what) {
+    int bytes = s.getBytes(java.nio.charset.StandardCharsets.UTF_8).length;
+    if (bytes < min || bytes > max || s.chars().anyMatch(Character::isISOControl)) {
+      throw expected(what);
+    }
+    return s;
+  }
+
   /** Strict on the word, lenient on case: {@code yes}, {@code 1} or {@code on} are typos here. */
   static Object bool(String s) {
     if (s.equalsIgnoreCase("true")) {

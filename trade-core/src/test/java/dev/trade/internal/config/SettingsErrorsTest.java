@@ -60,9 +60,20 @@ class SettingsErrorsTest {
 
   @Test
   void rejectsControlCharactersInText() {
-    assertEquals("CONTAINERNAME=a\nb: expected text without control characters",
-        assertThrows(IllegalArgumentException.class,
+    assertEquals("CONTAINERNAME=a\nb: expected a name of at most 255 bytes without control"
+        + " characters", assertThrows(IllegalArgumentException.class,
             () -> Settings.defaults().with("CONTAINERNAME", "a\nb")).getMessage());
+  }
+
+  @Test
+  void boundsWhatTravelsInFixedFields() {
+    assertEquals("TRADESYSID=" + "s".repeat(65) + ": expected a system id of 1 to 64 bytes without"
+        + " control characters", assertThrows(IllegalArgumentException.class,
+            () -> Settings.defaults().with("TRADESYSID", "s".repeat(65))).getMessage());
+    assertEquals("x".repeat(255), Settings.defaults().with("CONTAINERNAME", "x".repeat(255))
+        .containerName());
+    assertThrows(IllegalArgumentException.class,
+        () -> Settings.defaults().with("CONTAINERNAME", "\u00e9".repeat(128)));
   }
 
   @Test
