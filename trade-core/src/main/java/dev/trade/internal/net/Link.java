@@ -44,6 +44,8 @@ final class Link {
   private final AtomicBoolean closed = new AtomicBoolean();
   // Guarded by queue.
   private boolean writing;
+  // Guarded by queue: set when the link is to close once the queued frames are written.
+  private String closeWhenDrained;
   volatile long lastReceived = System.nanoTime();
   volatile long lastSent = System.nanoTime();
 
@@ -95,14 +97,20 @@ final class Link {
         }
         out.flush();
         lastSent = System.nanoTime();
+        String closing;
         synchronized (queue) {
           // Frames queued during the flush are ours to write too.
           next = queue.poll();
-          if (next == null) {
-            writing = false;
-            return;
+          if (next != null) {
+            continue;
           }
+          writing = false;
+          closing = closeWhenDrained;
         }
+        if (closing != null) {
+          close(closing);
+        }
+        return;
       }
     } catch (IOException e) {
       synchronized (queue) {
@@ -171,6 +179,17 @@ final class Link {
 
   boolean isClosed() {
     return closed.get();
+  }
+
+  /** Closes the link once the frames already handed to {@link #send} are written. */
+  void closeAfterSending(String reason) {
+    synchronized (queue) {
+      if (writing) {
+        closeWhenDrained = reason;
+        return;
+      }
+    }
+    close(reason);
   }
 
   /** Closes the socket (which also ends the reader thread); idempotent. */

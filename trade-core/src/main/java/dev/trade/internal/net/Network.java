@@ -280,7 +280,7 @@ public final class Network implements AutoCloseable {
             throw new IOException("short frame of type " + type);
           }
           if (type == Wire.CALL) {
-            calls.onCall(payload);
+            calls.onCall(link, payload);
           } else {
             calls.onReply(payload);
           }
@@ -363,10 +363,10 @@ public final class Network implements AutoCloseable {
     for (Link l : links.values()) {
       try {
         l.send(goodbye);
-      } catch (IOException ignored) {
-        // Closing anyway.
+        l.closeAfterSending("container closing");
+      } catch (IOException e) {
+        l.close("container closing");
       }
-      l.close("container closing");
     }
     calls.failAll("container " + name + " closed");
     control.shutdown();

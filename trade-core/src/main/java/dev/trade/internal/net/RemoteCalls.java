@@ -11,6 +11,7 @@ import dev.trade.internal.call.LocalInvoker;
 import dev.trade.internal.codec.ByteSink;
 import dev.trade.internal.codec.ByteSource;
 import dev.trade.internal.codec.Codec;
+import dev.trade.internal.codec.MalformedValueException;
 import dev.trade.internal.registry.LocalService;
 import dev.trade.internal.registry.ServiceDescriptor;
 import java.io.IOException;
@@ -148,14 +149,18 @@ final class RemoteCalls {
     }
   }
 
-  /** A CALL frame arrived (reader thread). */
-  void onCall(byte[] payload) {
+  /** A CALL frame arrived from {@code link} (reader thread). */
+  void onCall(Link link, byte[] payload) {
     UUID destination = Frames.destination(payload);
     if (!destination.equals(self)) {
       forward(Wire.CALL, payload, destination);
       return;
     }
-    executor.execute(() -> serve(payload));
+    try {
+      executor.execute(() -> serve(link, payload));
+    } catch (RejectedExecutionException closing) {
+      // The container is closing; the caller learns it from the link going down.
+    }
   }
 
   /** A REPLY frame arrived (reader thread). */
@@ -198,7 +203,7 @@ final class RemoteCalls {
     }
   }
 
-  private void serve(byte[] payload) {
+  private void serve(Link link, byte[] payload) {
     ByteSource in = ByteSource.of(payload, Frames.ROUTING, payload.length - Frames.ROUTING);
     try {
       in.readLong(); // request id, echoed by reply()
@@ -207,13 +212,13 @@ final class RemoteCalls {
       int count = in.readVarUInt();
       LocalService s = host.local(serviceId);
       if (s == null) {
-        reply(payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer: service "
+        reply(link, payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer: service "
             + serviceId + " was deregistered from container " + self);
         return;
       }
       ServiceDescriptor d = s.descriptor();
       if (count != d.parameterTypeNames().size()) {
-        reply(payload, Wire.FAILED_BAD_ARGUMENTS, "Service " + d.signature() + " takes "
+        reply(link, payload, Wire.FAILED_BAD_ARGUMENTS, "Service " + d.signature() + " takes "
             + d.parameterTypeNames().size() + " arguments but got " + count);
         return;
       }
@@ -228,29 +233,37 @@ final class RemoteCalls {
       try {
         codec.write(result, out);
       } catch (TRADESerializationException e) {
-        reply(payload, Wire.FAILED_SERIALIZATION, "The result of " + d.signature()
+        reply(link, payload, Wire.FAILED_SERIALIZATION, "The result of " + d.signature()
             + " cannot travel: " + e.getMessage());
         return;
       }
-      sendReply(payload, Frames.finish(out));
+      sendReply(link, payload, Frames.finish(out));
     } catch (TRADEInvocationException e) {
       ByteSink out = replyStart(payload, Wire.FAILED_INVOCATION);
       try {
         codec.write(e.getCause(), out);
-        sendReply(payload, Frames.finish(out));
+        sendReply(link, payload, Frames.finish(out));
       } catch (TRADESerializationException notEncodable) {
-        reply(payload, Wire.FAILED_OTHER, e.getMessage());
+        reply(link, payload, Wire.FAILED_OTHER, e.getMessage());
       }
     } catch (TRADEServiceUnavailableException e) {
-      reply(payload, Wire.FAILED_UNAVAILABLE, e.getMessage());
+      reply(link, payload, Wire.FAILED_UNAVAILABLE, e.getMessage());
     } catch (TRADEBadArgumentsException e) {
-      reply(payload, Wire.FAILED_BAD_ARGUMENTS, e.getMessage());
+      reply(link, payload, Wire.FAILED_BAD_ARGUMENTS, e.getMessage());
+    } catch (MalformedValueException e) {
+      reply(link, payload, Wire.FAILED_SERIALIZATION, "malformed call: " + e.getMessage());
+      if (Frames.source(payload).equals(link.peerId)) {
+        // The peer itself wrote bytes that are not a value: it is broken or hostile.
+        LOG.log(Level.WARNING, "malformed call from {0}: {1}; closing the connection",
+            link.peerName, e.getMessage());
+        link.closeAfterSending("malformed call: " + e.getMessage());
+      }
     } catch (TRADESerializationException e) {
-      reply(payload, Wire.FAILED_SERIALIZATION, e.getMessage());
+      reply(link, payload, Wire.FAILED_SERIALIZATION, e.getMessage());
     } catch (TRADETimeoutException e) {
-      reply(payload, Wire.FAILED_TIMEOUT, e.getMessage());
+      reply(link, payload, Wire.FAILED_TIMEOUT, e.getMessage());
     } catch (TRADEException | RuntimeException e) {
-      reply(payload, Wire.FAILED_OTHER, String.valueOf(e.getMessage()));
+      reply(link, payload, Wire.FAILED_OTHER, String.valueOf(e.getMessage()));
     }
   }
 
@@ -264,13 +277,27 @@ final class RemoteCalls {
   }
 
   private void reply(byte[] call, int status, String text) {
-    ByteSink out = replyStart(call, status);
-    out.writeText(text == null ? "" : text);
-    sendReply(call, Frames.finish(out));
+    reply(null, call, status, text);
   }
 
-  private void sendReply(byte[] call, byte[] frame) {
-    deliver(Frames.source(call), frame, 0);
+  private void reply(Link from, byte[] call, int status, String text) {
+    ByteSink out = replyStart(call, status);
+    out.writeText(text == null ? "" : text);
+    sendReply(from, call, Frames.finish(out));
+  }
+
+  /** Replies go straight back over the link a call came in on when the caller is that neighbour. */
+  private void sendReply(Link from, byte[] call, byte[] frame) {
+    UUID caller = Frames.source(call);
+    if (from != null && from.peerId.equals(caller) && !from.isClosed()) {
+      try {
+        from.send(frame);
+        return;
+      } catch (IOException e) {
+        // The link just failed: try whatever route remains.
+      }
+    }
+    deliver(caller, frame, 0);
   }
 
   /**
