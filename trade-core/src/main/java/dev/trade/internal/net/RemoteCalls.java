@@ -58,15 +58,18 @@ final class RemoteCalls {
   private final Router router;
   private final Host host;
   private final Executor executor;
+  private final int maxFrame;
   private final AtomicLong nextId = new AtomicLong();
   private final Map<Long, Pending> pending = new ConcurrentHashMap<>();
 
-  RemoteCalls(UUID self, Codec codec, Router router, Host host, Executor executor) {
+  /** @param maxFrame the largest frame (after its length field) that peers accept: MAXFRAMESIZE */
+  RemoteCalls(UUID self, Codec codec, Router router, Host host, Executor executor, int maxFrame) {
     this.self = self;
     this.codec = codec;
     this.router = router;
     this.host = host;
     this.executor = executor;
+    this.maxFrame = maxFrame;
   }
 
   /** Calls a service of another container and waits for its reply until the deadline. */
@@ -89,6 +92,11 @@ final class RemoteCalls {
       codec.write(a, out);
     }
     byte[] frame = Frames.finish(out);
+    if (!fits(frame)) {
+      // Each value fits its limit, but not the call as a whole; the peer would drop the link.
+      throw new TRADESerializationException("Cannot call " + d.signature() + ": its arguments need "
+          + (frame.length - 4) + " bytes, more than MAXFRAMESIZE=" + maxFrame);
+    }
     Pending p = new Pending(new CompletableFuture<>(), destination, link.peerId);
     pending.put(id, p);
     try {
@@ -221,12 +229,24 @@ final class RemoteCalls {
             + " cannot travel: " + e.getMessage());
         return;
       }
-      sendReply(payload, Frames.finish(out));
+      byte[] frame = Frames.finish(out);
+      if (!fits(frame)) {
+        reply(payload, Wire.FAILED_SERIALIZATION, "The result of " + d.signature()
+            + " cannot travel: the reply needs " + (frame.length - 4)
+            + " bytes, more than MAXFRAMESIZE=" + maxFrame);
+        return;
+      }
+      sendReply(payload, frame);
     } catch (TRADEInvocationException e) {
       ByteSink out = replyStart(payload, Wire.FAILED_INVOCATION);
       try {
         codec.write(e.getCause(), out);
-        sendReply(payload, Frames.finish(out));
+        byte[] frame = Frames.finish(out);
+        if (fits(frame)) {
+          sendReply(payload, frame);
+        } else {
+          reply(payload, Wire.FAILED_OTHER, e.getMessage());
+        }
       } catch (TRADESerializationException notEncodable) {
         reply(payload, Wire.FAILED_OTHER, e.getMessage());
       }
@@ -252,10 +272,17 @@ final class RemoteCalls {
     return out;
   }
 
+  /** A reply carrying only a text, shortened to what callers read (MAX_TEXT bytes of UTF-8). */
   private void reply(byte[] call, int status, String text) {
     ByteSink out = replyStart(call, status);
-    out.writeText(text == null ? "" : text);
+    String t = text == null ? "" : text;
+    out.writeText(t.length() > MAX_TEXT / 3 ? t.substring(0, MAX_TEXT / 3) : t);
     sendReply(call, Frames.finish(out));
+  }
+
+  /** Whether a finished frame is within the frame size that peers accept. */
+  private boolean fits(byte[] frame) {
+    return frame.length - 4 <= maxFrame;
   }
 
   private void sendReply(byte[] call, byte[] frame) {
