@@ -151,21 +151,21 @@ final class RemoteCalls {
     }
   }
 
-  /** A CALL frame arrived (reader thread). */
-  void onCall(byte[] payload) {
+  /** A CALL frame arrived over {@code from} (reader thread). */
+  void onCall(Link from, byte[] payload) {
     UUID destination = Frames.destination(payload);
     if (!destination.equals(self)) {
-      forward(Wire.CALL, payload, destination);
+      forward(from, Wire.CALL, payload, destination);
       return;
     }
-    executor.execute(() -> serve(payload));
+    executor.execute(() -> serve(from, payload));
   }
 
   /** A REPLY frame arrived (reader thread). */
   void onReply(byte[] payload) {
     UUID destination = Frames.destination(payload);
     if (!destination.equals(self)) {
-      forward(Wire.REPLY, payload, destination);
+      forward(null, Wire.REPLY, payload, destination);
       return;
     }
     long id = Frames.requestId(payload);
@@ -175,12 +175,13 @@ final class RemoteCalls {
     }
   }
 
-  private void forward(int type, byte[] payload, UUID destination) {
+  /** @param from the link a CALL came in on (for its failure reply); null for a REPLY */
+  private void forward(Link from, int type, byte[] payload, UUID destination) {
     Link next = router.nextHop(destination);
     if (next == null || Frames.hops(payload) <= 1) {
       LOG.log(Level.DEBUG, "dropping frame for unreachable {0}", destination);
       if (type == Wire.CALL) {
-        reply(payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer: container "
+        reply(from, payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer: container "
             + destination + " is not reachable from " + self);
       }
       return;
@@ -189,13 +190,13 @@ final class RemoteCalls {
       next.send(Frames.forwarded(type, payload));
     } catch (IOException e) {
       if (type == Wire.CALL) {
-        reply(payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer: the route to"
-            + " container " + destination + " was lost");
+        reply(from, payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer: the"
+            + " route to container " + destination + " was lost");
       }
     }
   }
 
-  private void serve(byte[] payload) {
+  private void serve(Link from, byte[] payload) {
     ByteSource in = ByteSource.of(payload, Frames.ROUTING, payload.length - Frames.ROUTING);
     try {
       in.readLong(); // request id, echoed by reply()
@@ -204,13 +205,13 @@ final class RemoteCalls {
       int count = in.readVarUInt();
       LocalService s = host.local(serviceId);
       if (s == null) {
-        reply(payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer: service "
+        reply(from, payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer: service "
             + serviceId + " was deregistered from container " + self);
         return;
       }
       ServiceDescriptor d = s.descriptor();
       if (count != d.parameterTypeNames().size()) {
-        reply(payload, Wire.FAILED_BAD_ARGUMENTS, "Service " + d.signature() + " takes "
+        reply(from, payload, Wire.FAILED_BAD_ARGUMENTS, "Service " + d.signature() + " takes "
             + d.parameterTypeNames().size() + " arguments but got " + count);
         return;
       }
@@ -225,41 +226,41 @@ final class RemoteCalls {
       try {
         codec.write(result, out);
       } catch (TRADESerializationException e) {
-        reply(payload, Wire.FAILED_SERIALIZATION, "The result of " + d.signature()
+        reply(from, payload, Wire.FAILED_SERIALIZATION, "The result of " + d.signature()
             + " cannot travel: " + e.getMessage());
         return;
       }
       byte[] frame = Frames.finish(out);
       if (!fits(frame)) {
-        reply(payload, Wire.FAILED_SERIALIZATION, "The result of " + d.signature()
+        reply(from, payload, Wire.FAILED_SERIALIZATION, "The result of " + d.signature()
             + " cannot travel: the reply needs " + (frame.length - 4)
             + " bytes, more than MAXFRAMESIZE=" + maxFrame);
         return;
       }
-      sendReply(payload, frame);
+      sendReply(from, payload, frame);
     } catch (TRADEInvocationException e) {
       ByteSink out = replyStart(payload, Wire.FAILED_INVOCATION);
       try {
         codec.write(e.getCause(), out);
         byte[] frame = Frames.finish(out);
         if (fits(frame)) {
-          sendReply(payload, frame);
+          sendReply(from, payload, frame);
         } else {
-          reply(payload, Wire.FAILED_OTHER, e.getMessage());
+          reply(from, payload, Wire.FAILED_OTHER, e.getMessage());
         }
       } catch (TRADESerializationException notEncodable) {
-        reply(payload, Wire.FAILED_OTHER, e.getMessage());
+        reply(from, payload, Wire.FAILED_OTHER, e.getMessage());
       }
     } catch (TRADEServiceUnavailableException e) {
-      reply(payload, Wire.FAILED_UNAVAILABLE, e.getMessage());
+      reply(from, payload, Wire.FAILED_UNAVAILABLE, e.getMessage());
     } catch (TRADEBadArgumentsException e) {
-      reply(payload, Wire.FAILED_BAD_ARGUMENTS, e.getMessage());
+      reply(from, payload, Wire.FAILED_BAD_ARGUMENTS, e.getMessage());
     } catch (TRADESerializationException e) {
-      reply(payload, Wire.FAILED_SERIALIZATION, e.getMessage());
+      reply(from, payload, Wire.FAILED_SERIALIZATION, e.getMessage());
     } catch (TRADETimeoutException e) {
-      reply(payload, Wire.FAILED_TIMEOUT, e.getMessage());
+      reply(from, payload, Wire.FAILED_TIMEOUT, e.getMessage());
     } catch (TRADEException | RuntimeException e) {
-      reply(payload, Wire.FAILED_OTHER, String.valueOf(e.getMessage()));
+      reply(from, payload, Wire.FAILED_OTHER, String.valueOf(e.getMessage()));
     }
   }
 
@@ -273,11 +274,11 @@ final class RemoteCalls {
   }
 
   /** A reply carrying only a text, shortened to what callers read (MAX_TEXT bytes of UTF-8). */
-  private void reply(byte[] call, int status, String text) {
+  private void reply(Link from, byte[] call, int status, String text) {
     ByteSink out = replyStart(call, status);
     String t = text == null ? "" : text;
     out.writeText(t.length() > MAX_TEXT / 3 ? t.substring(0, MAX_TEXT / 3) : t);
-    sendReply(call, Frames.finish(out));
+    sendReply(from, call, Frames.finish(out));
   }
 
   /** Whether a finished frame is within the frame size that peers accept. */
@@ -285,9 +286,17 @@ final class RemoteCalls {
     return frame.length - 4 <= maxFrame;
   }
 
-  private void sendReply(byte[] call, byte[] frame) {
+  /**
+   * Sends a reply along the route to the caller, or back over the link its call came in on
+   * ({@code from}) while there is no route: a call can overtake the caller's link state, which the
+   * control thread applies later, so a new neighbour's first calls find no route yet.
+   */
+  private void sendReply(Link from, byte[] call, byte[] frame) {
     UUID caller = Frames.source(call);
     Link link = router.nextHop(caller);
+    if (link == null) {
+      link = from;
+    }
     if (link == null) {
       LOG.log(Level.DEBUG, "caller {0} is not reachable any more; reply dropped", caller);
       return;
