@@ -20,6 +20,7 @@ import java.util.UUID;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.TimeUnit;
@@ -97,7 +98,8 @@ public final class Network implements AutoCloseable {
             return peer != null && links.containsKey(peer);
           }
         });
-    registry.addListener((added, removed) -> replication.localChanged(added, removed, control));
+    registry.addListener(
+        (added, removed) -> replication.localChanged(added, removed, this::onControl));
   }
 
   /**
@@ -170,7 +172,7 @@ public final class Network implements AutoCloseable {
     if (initiatedHere) {
       dialled.put((InetSocketAddress) socket.getRemoteSocketAddress(), peer.containerId());
     }
-    control.execute(() -> {
+    onControl(() -> {
       if (closed) {
         link.close("container closing");
         return;
@@ -224,7 +226,7 @@ public final class Network implements AutoCloseable {
         case Wire.TABLE:
         case Wire.DELTA:
         case Wire.TABLE_REQUEST:
-          control.execute(() -> replication.received(link, type, payload));
+          onControl(() -> replication.received(link, type, payload));
           break;
         default:
           throw new IOException("unknown frame type " + type);
@@ -233,7 +235,7 @@ public final class Network implements AutoCloseable {
 
     @Override
     public void closed(Link link, String reason) {
-      control.execute(() -> {
+      onControl(() -> {
         if (links.remove(link.peerId, link)) {
           LOG.log(closed ? Level.DEBUG : Level.INFO, "{0}: link to {1} closed: {2}", name,
               link.peerName, reason);
@@ -247,6 +249,20 @@ public final class Network implements AutoCloseable {
       });
     }
   };
+
+  /**
+   * Runs a state change on the control thread. Once {@link #close()} stopped that thread, there is
+   * no state left to keep: link readers that notice their closed sockets then have nothing to do.
+   */
+  private void onControl(Runnable change) {
+    try {
+      control.execute(change);
+    } catch (RejectedExecutionException e) {
+      if (!closed) {
+        throw e;
+      }
+    }
+  }
 
   private void heartbeat() {
     long now = System.nanoTime();
