@@ -39,6 +39,8 @@ final class Link {
   private final int maxFrame;
   private final ArrayDeque<byte[]> queue = new ArrayDeque<>();
   private final AtomicBoolean closed = new AtomicBoolean();
+  /** Why the link was closed, by whoever closed it first; null while it is open. */
+  private volatile String closeReason;
   // Guarded by queue.
   private boolean writing;
   volatile long lastReceived = System.nanoTime();
@@ -137,9 +139,13 @@ final class Link {
         handler.frame(this, type, payload);
       }
     } catch (IOException e) {
-      reason = closed.get() ? "closed" : "connection to " + peerName + " lost: " + e.getMessage();
+      reason = "connection to " + peerName + " lost: " + e.getMessage();
     } catch (RuntimeException e) {
       reason = "malformed frame from " + peerName + ": " + e;
+    }
+    String closedHere = closeReason; // closed while we read (silence, goodbye...): that is why
+    if (closedHere != null) {
+      reason = closedHere;
     }
     close(reason);
     handler.closed(this, reason);
@@ -152,6 +158,7 @@ final class Link {
   /** Closes the socket (which also ends the reader thread); idempotent. */
   void close(String reason) {
     if (closed.compareAndSet(false, true)) {
+      closeReason = reason;
       try {
         socket.close();
       } catch (IOException ignored) {
