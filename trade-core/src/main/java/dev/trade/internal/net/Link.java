@@ -30,6 +30,8 @@ final class Link {
     void closed(Link link, String reason);
   }
 
+  private static final int READ_CHUNK = 64 * 1024;
+
   final UUID peerId;
   final String peerName;
   final boolean initiatedHere;
@@ -133,8 +135,7 @@ final class Link {
           reason = "frame of protocol version " + version + " from " + peerName;
           break;
         }
-        byte[] payload = new byte[length - 2];
-        in.readFully(payload);
+        byte[] payload = readPayload(length - 2);
         lastReceived = System.nanoTime();
         handler.frame(this, type, payload);
       }
@@ -149,6 +150,24 @@ final class Link {
     }
     close(reason);
     handler.closed(this, reason);
+  }
+
+  /**
+   * Reads a frame's payload, noting the time whenever bytes arrive: a large frame on a slow link
+   * can take longer than FAILURETIMEOUT, and a peer whose bytes keep coming is not silent.
+   */
+  private byte[] readPayload(int size) throws IOException {
+    byte[] payload = new byte[size];
+    int done = 0;
+    while (done < size) {
+      int n = in.read(payload, done, Math.min(READ_CHUNK, size - done));
+      if (n < 0) {
+        throw new EOFException("connection closed by " + peerName + " within a frame");
+      }
+      done += n;
+      lastReceived = System.nanoTime();
+    }
+    return payload;
   }
 
   boolean isClosed() {
