@@ -32,6 +32,8 @@ final class Link {
     void closed(Link link, String reason);
   }
 
+  private static final int READ_CHUNK = 64 * 1024;
+
   final UUID peerId;
   final String peerName;
   final boolean initiatedHere;
@@ -42,6 +44,8 @@ final class Link {
   private final FrameCipher cipher;
   private final ArrayDeque<byte[]> queue = new ArrayDeque<>();
   private final AtomicBoolean closed = new AtomicBoolean();
+  /** Why the link was closed, by whoever closed it first; null while it is open. */
+  private volatile String closeReason;
   // Guarded by queue.
   private boolean writing;
   // Guarded by queue: set when the link is to close once the queued frames are written.
@@ -145,11 +149,9 @@ final class Link {
         if (cipher == null) {
           version = in.readUnsignedByte();
           type = in.readUnsignedByte();
-          payload = new byte[length - 2];
-          in.readFully(payload);
+          payload = readPayload(length - 2);
         } else {
-          byte[] sealed = new byte[length];
-          in.readFully(sealed);
+          byte[] sealed = readPayload(length);
           byte[] body;
           try {
             body = cipher.open(sealed);
@@ -169,12 +171,34 @@ final class Link {
         handler.frame(this, type, payload);
       }
     } catch (IOException e) {
-      reason = closed.get() ? "closed" : "connection to " + peerName + " lost: " + e.getMessage();
+      reason = "connection to " + peerName + " lost: " + e.getMessage();
     } catch (RuntimeException e) {
       reason = "malformed frame from " + peerName + ": " + e;
     }
+    String closedHere = closeReason; // closed while we read (silence, goodbye...): that is why
+    if (closedHere != null) {
+      reason = closedHere;
+    }
     close(reason);
     handler.closed(this, reason);
+  }
+
+  /**
+   * Reads a frame's payload, noting the time whenever bytes arrive: a large frame on a slow link
+   * can take longer than FAILURETIMEOUT, and a peer whose bytes keep coming is not silent.
+   */
+  private byte[] readPayload(int size) throws IOException {
+    byte[] payload = new byte[size];
+    int done = 0;
+    while (done < size) {
+      int n = in.read(payload, done, Math.min(READ_CHUNK, size - done));
+      if (n < 0) {
+        throw new EOFException("connection closed by " + peerName + " within a frame");
+      }
+      done += n;
+      lastReceived = System.nanoTime();
+    }
+    return payload;
   }
 
   boolean isClosed() {
@@ -195,6 +219,7 @@ final class Link {
   /** Closes the socket (which also ends the reader thread); idempotent. */
   void close(String reason) {
     if (closed.compareAndSet(false, true)) {
+      closeReason = reason;
       try {
         socket.close();
       } catch (IOException ignored) {

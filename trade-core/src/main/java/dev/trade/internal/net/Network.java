@@ -84,7 +84,7 @@ public final class Network implements AutoCloseable {
       public Object invoke(Invocation call) throws TRADEException {
         return provider.invoke(call);
       }
-    }, workers, timer);
+    }, workers, timer, settings.maxFrameSize());
     this.replication = new Replication(self, registry, tableCodec, links, calls);
     Handshake handshake = new Handshake(new Handshake.Identity(settings.tradeSysId(), self, name,
         host, List.of(), settings.useEncryption()), settings.credentials());
@@ -101,7 +101,8 @@ public final class Network implements AutoCloseable {
             return peer != null && links.containsKey(peer);
           }
         });
-    registry.addListener((added, removed) -> replication.localChanged(added, removed, this::onControl));
+    registry.addListener(
+        (added, removed) -> replication.localChanged(added, removed, this::onControl));
   }
 
   /**
@@ -318,12 +319,17 @@ public final class Network implements AutoCloseable {
     }
   };
 
-  /** Runs a state change on the control thread; after close, there is nothing left to change. */
-  private void onControl(Runnable task) {
+  /**
+   * Runs a state change on the control thread. Once {@link #close()} stopped that thread, there is
+   * no state left to keep: link readers that notice their closed sockets then have nothing to do.
+   */
+  private void onControl(Runnable change) {
     try {
-      control.execute(task);
-    } catch (RejectedExecutionException closing) {
-      // The container is closing.
+      control.execute(change);
+    } catch (RejectedExecutionException e) {
+      if (!closed) {
+        throw e;
+      }
     }
   }
 

@@ -62,17 +62,20 @@ final class RemoteCalls {
   private final Host host;
   private final Executor executor;
   private final ScheduledExecutorService timer;
+  private final int maxFrame;
   private final AtomicLong nextId = new AtomicLong();
   private final Map<Long, Pending> pending = new ConcurrentHashMap<>();
 
+  /** @param maxFrame the largest frame (after its length field) that peers accept: MAXFRAMESIZE */
   RemoteCalls(UUID self, Codec codec, Router router, Host host, Executor executor,
-      ScheduledExecutorService timer) {
+      ScheduledExecutorService timer, int maxFrame) {
     this.self = self;
     this.codec = codec;
     this.router = router;
     this.host = host;
     this.executor = executor;
     this.timer = timer;
+    this.maxFrame = maxFrame;
   }
 
   /** Calls a service of another container and waits for its reply until the deadline. */
@@ -95,6 +98,11 @@ final class RemoteCalls {
       codec.write(a, out);
     }
     byte[] frame = Frames.finish(out);
+    if (!fits(frame)) {
+      // Each value fits its limit, but not the call as a whole; the peer would drop the link.
+      throw new TRADESerializationException("Cannot call " + d.signature() + ": its arguments need "
+          + (frame.length - 4) + " bytes, more than MAXFRAMESIZE=" + maxFrame);
+    }
     Pending p = new Pending(new CompletableFuture<>(), destination, link.peerId);
     pending.put(id, p);
     try {
@@ -149,15 +157,15 @@ final class RemoteCalls {
     }
   }
 
-  /** A CALL frame arrived from {@code link} (reader thread). */
-  void onCall(Link link, byte[] payload) {
+  /** A CALL frame arrived over {@code from} (reader thread). */
+  void onCall(Link from, byte[] payload) {
     UUID destination = Frames.destination(payload);
     if (!destination.equals(self)) {
-      forward(Wire.CALL, payload, destination);
+      forward(from, Wire.CALL, payload, destination);
       return;
     }
     try {
-      executor.execute(() -> serve(link, payload));
+      executor.execute(() -> serve(from, payload));
     } catch (RejectedExecutionException closing) {
       // The container is closing; the caller learns it from the link going down.
     }
@@ -167,7 +175,7 @@ final class RemoteCalls {
   void onReply(byte[] payload) {
     UUID destination = Frames.destination(payload);
     if (!destination.equals(self)) {
-      forward(Wire.REPLY, payload, destination);
+      forward(null, Wire.REPLY, payload, destination);
       return;
     }
     long id = Frames.requestId(payload);
@@ -177,7 +185,8 @@ final class RemoteCalls {
     }
   }
 
-  private void forward(int type, byte[] payload, UUID destination) {
+  /** @param from the link a CALL came in on (for its failure reply); null for a REPLY */
+  private void forward(Link from, int type, byte[] payload, UUID destination) {
     if (type == Wire.REPLY) {
       if (Frames.hops(payload) > 1) {
         deliver(destination, Frames.forwarded(type, payload), 0);
@@ -188,7 +197,7 @@ final class RemoteCalls {
     if (next == null || Frames.hops(payload) <= 1) {
       LOG.log(Level.DEBUG, "dropping frame for unreachable {0}", destination);
       if (type == Wire.CALL) {
-        reply(payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer: container "
+        reply(from, payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer: container "
             + destination + " is not reachable from " + self);
       }
       return;
@@ -197,13 +206,13 @@ final class RemoteCalls {
       next.send(Frames.forwarded(type, payload));
     } catch (IOException e) {
       if (type == Wire.CALL) {
-        reply(payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer: the route to"
-            + " container " + destination + " was lost");
+        reply(from, payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer: the"
+            + " route to container " + destination + " was lost");
       }
     }
   }
 
-  private void serve(Link link, byte[] payload) {
+  private void serve(Link from, byte[] payload) {
     ByteSource in = ByteSource.of(payload, Frames.ROUTING, payload.length - Frames.ROUTING);
     try {
       in.readLong(); // request id, echoed by reply()
@@ -212,13 +221,13 @@ final class RemoteCalls {
       int count = in.readVarUInt();
       LocalService s = host.local(serviceId);
       if (s == null) {
-        reply(link, payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer: service "
+        reply(from, payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer: service "
             + serviceId + " was deregistered from container " + self);
         return;
       }
       ServiceDescriptor d = s.descriptor();
       if (count != d.parameterTypeNames().size()) {
-        reply(link, payload, Wire.FAILED_BAD_ARGUMENTS, "Service " + d.signature() + " takes "
+        reply(from, payload, Wire.FAILED_BAD_ARGUMENTS, "Service " + d.signature() + " takes "
             + d.parameterTypeNames().size() + " arguments but got " + count);
         return;
       }
@@ -233,37 +242,49 @@ final class RemoteCalls {
       try {
         codec.write(result, out);
       } catch (TRADESerializationException e) {
-        reply(link, payload, Wire.FAILED_SERIALIZATION, "The result of " + d.signature()
+        reply(from, payload, Wire.FAILED_SERIALIZATION, "The result of " + d.signature()
             + " cannot travel: " + e.getMessage());
         return;
       }
-      sendReply(link, payload, Frames.finish(out));
+      byte[] frame = Frames.finish(out);
+      if (!fits(frame)) {
+        reply(from, payload, Wire.FAILED_SERIALIZATION, "The result of " + d.signature()
+            + " cannot travel: the reply needs " + (frame.length - 4)
+            + " bytes, more than MAXFRAMESIZE=" + maxFrame);
+        return;
+      }
+      sendReply(from, payload, frame);
     } catch (TRADEInvocationException e) {
       ByteSink out = replyStart(payload, Wire.FAILED_INVOCATION);
       try {
         codec.write(e.getCause(), out);
-        sendReply(link, payload, Frames.finish(out));
+        byte[] frame = Frames.finish(out);
+        if (fits(frame)) {
+          sendReply(from, payload, frame);
+        } else {
+          reply(from, payload, Wire.FAILED_OTHER, e.getMessage());
+        }
       } catch (TRADESerializationException notEncodable) {
-        reply(link, payload, Wire.FAILED_OTHER, e.getMessage());
+        reply(from, payload, Wire.FAILED_OTHER, e.getMessage());
       }
     } catch (TRADEServiceUnavailableException e) {
-      reply(link, payload, Wire.FAILED_UNAVAILABLE, e.getMessage());
+      reply(from, payload, Wire.FAILED_UNAVAILABLE, e.getMessage());
     } catch (TRADEBadArgumentsException e) {
-      reply(link, payload, Wire.FAILED_BAD_ARGUMENTS, e.getMessage());
+      reply(from, payload, Wire.FAILED_BAD_ARGUMENTS, e.getMessage());
     } catch (MalformedValueException e) {
-      reply(link, payload, Wire.FAILED_SERIALIZATION, "malformed call: " + e.getMessage());
-      if (Frames.source(payload).equals(link.peerId)) {
+      reply(from, payload, Wire.FAILED_SERIALIZATION, "malformed call: " + e.getMessage());
+      if (Frames.source(payload).equals(from.peerId)) {
         // The peer itself wrote bytes that are not a value: it is broken or hostile.
         LOG.log(Level.WARNING, "malformed call from {0}: {1}; closing the connection",
-            link.peerName, e.getMessage());
-        link.closeAfterSending("malformed call: " + e.getMessage());
+            from.peerName, e.getMessage());
+        from.closeAfterSending("malformed call: " + e.getMessage());
       }
     } catch (TRADESerializationException e) {
-      reply(link, payload, Wire.FAILED_SERIALIZATION, e.getMessage());
+      reply(from, payload, Wire.FAILED_SERIALIZATION, e.getMessage());
     } catch (TRADETimeoutException e) {
-      reply(link, payload, Wire.FAILED_TIMEOUT, e.getMessage());
+      reply(from, payload, Wire.FAILED_TIMEOUT, e.getMessage());
     } catch (TRADEException | RuntimeException e) {
-      reply(link, payload, Wire.FAILED_OTHER, String.valueOf(e.getMessage()));
+      reply(from, payload, Wire.FAILED_OTHER, String.valueOf(e.getMessage()));
     }
   }
 
@@ -276,17 +297,24 @@ final class RemoteCalls {
     return out;
   }
 
-  private void reply(byte[] call, int status, String text) {
-    reply(null, call, status, text);
-  }
-
+  /** A reply carrying only a text, shortened to what callers read (MAX_TEXT bytes of UTF-8). */
   private void reply(Link from, byte[] call, int status, String text) {
     ByteSink out = replyStart(call, status);
-    out.writeText(text == null ? "" : text);
+    String t = text == null ? "" : text;
+    out.writeText(t.length() > MAX_TEXT / 3 ? t.substring(0, MAX_TEXT / 3) : t);
     sendReply(from, call, Frames.finish(out));
   }
 
-  /** Replies go straight back over the link a call came in on when the caller is that neighbour. */
+  /** Whether a finished frame is within the frame size that peers accept. */
+  private boolean fits(byte[] frame) {
+    return frame.length - 4 <= maxFrame;
+  }
+
+  /**
+   * Sends a reply to its caller: straight back over the link the call came in on when the caller
+   * is that neighbour (a call can overtake the caller's link state, so a new neighbour's first
+   * calls may find no route yet), else along the route.
+   */
   private void sendReply(Link from, byte[] call, byte[] frame) {
     UUID caller = Frames.source(call);
     if (from != null && from.peerId.equals(caller) && !from.isClosed()) {
@@ -294,7 +322,7 @@ final class RemoteCalls {
         from.send(frame);
         return;
       } catch (IOException e) {
-        // The link just failed: try whatever route remains.
+        // That link just failed: try whatever route remains.
       }
     }
     deliver(caller, frame, 0);
