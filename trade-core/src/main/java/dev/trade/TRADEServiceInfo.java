@@ -88,7 +88,13 @@ public final class TRADEServiceInfo implements Serializable {
     if (timeout.isNegative() || timeout.isZero()) {
       throw new IllegalArgumentException("timeout must be positive: " + timeout);
     }
-    return new TRADEServiceInfo(descriptor, caller, timeout.toNanos());
+    long nanos;
+    try {
+      nanos = timeout.toNanos();
+    } catch (ArithmeticException tooLong) {
+      nanos = Long.MAX_VALUE / 4; // centuries: as good as no deadline, without overflowing it
+    }
+    return new TRADEServiceInfo(descriptor, caller, nanos);
   }
 
   /**

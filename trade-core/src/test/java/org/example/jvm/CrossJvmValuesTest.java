@@ -66,6 +66,7 @@ class CrossJvmValuesTest {
 
   private static JvmProcess provider;
   private static TRADEContainer consumer;
+  private static String providerAddress;
   private static final Map<String, TRADEServiceInfo> services = new LinkedHashMap<>();
 
   @BeforeAll
@@ -76,6 +77,7 @@ class CrossJvmValuesTest {
     // Compiled while the provider starts; its class loader finds the class when it is first used.
     compileProviderOnlyException(dir.resolve("src"), extraClasses);
     String address = ProviderMain.address(provider.awaitLine("READY ", START));
+    providerAddress = address;
     consumer = TRADEContainer.builder().name("consumer")
         .property("CONNECTCONTAINERS", address)
         // Our value types, and the provider-only package (allowed, but its class is not known here).
@@ -380,6 +382,22 @@ class CrossJvmValuesTest {
     TRADERemoteException remote = assertInstanceOf(TRADERemoteException.class, e.getCause());
     assertEquals("org.example.jvm.secret.Secrets$SecretException", remote.getRemoteTypeName());
     assertTrue(remote.getMessage().endsWith("the code is 1234"), remote.getMessage());
+  }
+
+  @Test
+  void aCallerWithoutAllowListSettingsDecodesTheTypesItsOwnCodeNames() throws TRADEException {
+    try (TRADEContainer plain = TRADEContainer.builder().name("plain")
+        .property("CONNECTCONTAINERS", providerAddress)
+        .build()) {
+      TRADEServiceConstraints move = new TRADEServiceConstraints().inGroups("provider").name("move");
+      Await.until(START, () -> !plain.getAvailableServices(move).isEmpty(), "move on plain");
+      TRADEServiceInfo s = plain.getAvailableService(move);
+      assertEquals(new Pose(3, 2, 0, "map"), s.call(Pose.class, new Pose(1, 2, 0, "map"), 2.0));
+      TRADESerializationException e = assertThrows(TRADESerializationException.class,
+          () -> plain.getAvailableService(new TRADEServiceConstraints().inGroups("provider")
+              .name("secretCode")).call(Object.class));
+      assertTrue(e.getMessage().contains("SERIALIZATIONALLOWLIST"), e.getMessage());
+    }
   }
 
   @Test

@@ -249,7 +249,14 @@ public final class ContainerCore implements ServiceCaller {
       throw LocalInvoker.unavailable(d, "this container has no network");
     }
     ClassLoader loader = callerLoader(returnType);
-    Returns.check(d, returnType, Types.resolve(d.returnTypeName(), loader));
+    Class<?> declared = Types.resolve(d.returnTypeName(), loader);
+    Returns.check(d, returnType, declared);
+    // The types the caller's own code names may arrive: the declared return type when this JVM
+    // has it, and the requested one. Nothing a remote peer names alone is allowed this way.
+    if (declared != null) {
+      allowList.addPackageOf(declared);
+    }
+    allowList.addPackageOf(returnType);
     if (normalized.length != d.parameterTypeNames().size()) {
       throw new TRADEBadArgumentsException("Service " + d.signature() + " takes "
           + d.parameterTypeNames().size() + " arguments but got " + normalized.length);

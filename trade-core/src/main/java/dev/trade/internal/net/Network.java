@@ -343,11 +343,15 @@ public final class Network implements AutoCloseable {
         l.close("silent for " + TimeUnit.NANOSECONDS.toMillis(now - l.lastReceived)
             + " ms (FAILURETIMEOUT=" + settings.failureTimeout().toMillis() + ")");
       } else if (now - l.lastSent >= interval) {
-        try {
-          l.send(ping);
-        } catch (IOException e) {
-          // send() closed the link; its reader reports it.
-        }
+        // On a worker: a ping that finds a large frame being written must not hold up the
+        // heartbeats (and silence checks) of every other link.
+        workers.execute(() -> {
+          try {
+            l.send(ping);
+          } catch (IOException e) {
+            // send() closed the link; its reader reports it.
+          }
+        });
       }
     }
   }
