@@ -25,13 +25,13 @@ import org.junit.jupiter.api.Assumptions;
  * {@code true}, and are skipped otherwise (a developer machine may lack loopback multicast; CI must
  * not silently skip the discovery tests).
  */
-final class LoopbackMulticast {
+public final class LoopbackMulticast {
   private static String problem; // Guarded by the class; "" once the probe passed.
 
   private LoopbackMulticast() {}
 
   /** Skips (or, in CI, fails) the calling test unless multicast on loopback works. */
-  static synchronized void assumeUsable() {
+  public static synchronized void assumeUsable() {
     if (problem == null) {
       problem = probe();
     }

@@ -1,0 +1,98 @@
+package org.example.jvm;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trade.TRADEContainer;
+import dev.trade.TRADEException;
+import dev.trade.TRADEService;
+import dev.trade.TRADEServiceConstraints;
+import dev.trade.TRADEServiceInfo;
+import dev.trade.internal.discovery.LoopbackMulticast;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.ThreadLocalRandom;
+import java.util.concurrent.TimeUnit;
+import org.example.net.Await;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Three JVMs with no addresses configured find each other by multicast on loopback (range
+ * localhost: lo, TTL 0), call across, and see a killed one leave.
+ */
+class DiscoveryAcrossJvmsTest {
+  private static final Duration START = Duration.ofSeconds(30);
+
+  /** Counts "left" events of the killed provider's services. */
+  public static class Watcher {
+    final CountDownLatch left = new CountDownLatch(1);
+    volatile long leftAt;
+
+    @TRADEService
+    public void left(TRADEServiceInfo info) {
+      if (info.getContainerName().equals("p2") && leftAt == 0) {
+        leftAt = System.nanoTime();
+        left.countDown();
+      }
+    }
+  }
+
+  @Test
+  void threeJvmsDiscoverEachOtherCallAcrossAndSeeAKilledOneLeave() throws Exception {
+    LoopbackMulticast.assumeUsable();
+    String port = Integer.toString(20_000 + ThreadLocalRandom.current().nextInt(20_000));
+    String[] discovery = {"STARTDISCOVERY=true", "STARTBROADCAST=true", "BROADCASTPORT=" + port,
+        "TRADESYSID=jvm-discovery"};
+    try (JvmProcess p1 = ProviderMain.launch(List.of(), with(discovery, "CONTAINERNAME=p1"));
+        JvmProcess p2 = ProviderMain.launch(List.of(), with(discovery, "CONTAINERNAME=p2"));
+        TRADEContainer here = TRADEContainer.builder().name("here")
+            .property("STARTDISCOVERY", "true").property("STARTBROADCAST", "true")
+            .property("BROADCASTPORT", port).property("TRADESYSID", "jvm-discovery").build()) {
+      p1.awaitLine("READY ", START);
+      p2.awaitLine("READY ", START);
+      TRADEServiceConstraints upper = new TRADEServiceConstraints().name("upper");
+      Await.until(START, () -> here.getAvailableServices(upper).size() == 2, "both providers");
+      for (TRADEServiceInfo s : here.getAvailableServices(upper)) {
+        assertEquals("ABC", s.call(String.class, "abc"));
+      }
+      // p1 calls p2: hand p1 a handle to p2's service; it calls it from its own container.
+      TRADEServiceInfo p1CallBack = only(here, new TRADEServiceConstraints().name("callBack"), "p1");
+      TRADEServiceInfo p2Upper = only(here, upper, "p2");
+      assertEquals("p1", p1CallBack.getContainerName());
+      assertEquals("XYZ", p1CallBack.call(String.class, p2Upper, "xyz"));
+
+      Watcher w = new Watcher();
+      here.requestNotification(w, "left", new TRADEServiceConstraints().name("upper"), null, "left");
+      long killed = System.nanoTime();
+      p2.kill();
+      assertTrue(w.left.await(5, TimeUnit.SECONDS), "left of p2's services");
+      long millis = TimeUnit.NANOSECONDS.toMillis(w.leftAt - killed);
+      assertTrue(millis <= 1000, "left after " + millis + " ms");
+      assertEquals(List.of("p1"), names(here.getAvailableServices(upper)));
+    }
+  }
+
+  private static String[] with(String[] base, String extra) {
+    List<String> all = new ArrayList<>(List.of(base));
+    all.add(extra);
+    return all.toArray(new String[0]);
+  }
+
+  private static TRADEServiceInfo only(TRADEContainer c, TRADEServiceConstraints k, String container)
+      throws TRADEException {
+    for (TRADEServiceInfo s : c.getAvailableServices(k)) {
+      if (s.getContainerName().equals(container)) {
+        return s;
+      }
+    }
+    throw new AssertionError("no " + k + " in " + container);
+  }
+
+  private static List<String> names(java.util.Collection<TRADEServiceInfo> infos) {
+    List<String> result = new ArrayList<>();
+    infos.forEach(i -> result.add(i.getContainerName()));
+    return result;
+  }
+}
