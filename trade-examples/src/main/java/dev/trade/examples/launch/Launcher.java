@@ -161,7 +161,7 @@ public final class Launcher {
         }
       }
       idleCheck();
-      while (result == null) {
+      while (result == null && !isStopped()) {
         Runnable event = deadline == null ? events.take()
             : events.poll(start + deadline.toNanos() - System.nanoTime(), TimeUnit.NANOSECONDS);
         if (event == null) {
@@ -175,6 +175,9 @@ public final class Launcher {
     } finally {
       stopAll();
       timer.shutdownNow();
+    }
+    if (result == null) {
+      result = 1; // stopped from outside: Ctrl-C or a signal
     }
     say("done in " + seconds(System.nanoTime() - start) + ", exit status " + result);
     return result;
@@ -266,6 +269,9 @@ public final class Launcher {
 
   private void onExit(Child child, int status) {
     running.remove(child.name());
+    if (isStopped()) {
+      return; // stopAll() ended it
+    }
     if (child.wasKilled()) {
       say(child.name() + " is gone (killed)");
       return;
@@ -340,6 +346,10 @@ public final class Launcher {
         children.values().forEach(Child::kill);
       }
     }
+  }
+
+  private synchronized boolean isStopped() {
+    return stopped;
   }
 
   private String prefix(String name) {
