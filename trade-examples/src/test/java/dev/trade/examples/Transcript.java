@@ -1,4 +1,4 @@
-package dev.trade.examples.launch;
+package dev.trade.examples;
 
 import java.io.BufferedReader;
 import java.io.IOException;
@@ -16,13 +16,13 @@ import java.util.concurrent.TimeUnit;
  * deadline instead of sleeping. Lines are kept as printed, with the prefix padding squeezed to one
  * blank ({@code [arm] opening gripper}). Safe for concurrent use.
  */
-final class Transcript {
+public final class Transcript {
   private final List<String> lines = new ArrayList<>(); // Guarded by this.
   private final Map<String, Integer> cursors = new HashMap<>(); // Guarded by this.
   private boolean ended; // Guarded by this.
 
   /** Starts reading {@code in} on a daemon thread. */
-  Transcript(InputStream in) {
+  public Transcript(InputStream in) {
     Thread reader = new Thread(() -> read(in), "transcript-reader");
     reader.setDaemon(true);
     reader.start();
@@ -50,13 +50,15 @@ final class Transcript {
 
   /**
    * Waits for the next line of {@code component} (after the one the previous call for it found)
-   * that contains {@code text}, and returns it.
+   * that contains {@code text}, and returns it. A null {@code component} means any line: for the
+   * output of a single program.
    *
    * @param deadline a {@link System#nanoTime()} value
    * @throws AssertionError at the deadline or when the output ended, with the whole transcript
    */
-  synchronized String await(String component, String text, long deadline) throws InterruptedException {
-    String prefix = "[" + component + "] ";
+  public synchronized String await(String component, String text, long deadline)
+      throws InterruptedException {
+    String prefix = component == null ? "" : "[" + component + "] ";
     while (true) {
       for (int i = cursors.getOrDefault(component, 0); i < lines.size(); i++) {
         if (lines.get(i).startsWith(prefix) && lines.get(i).contains(text)) {
@@ -74,9 +76,10 @@ final class Transcript {
   }
 
   /** Whether some line of {@code component} so far contains {@code text}. */
-  synchronized boolean contains(String component, String text) {
+  public synchronized boolean contains(String component, String text) {
+    String prefix = component == null ? "" : "[" + component + "] ";
     for (String line : lines) {
-      if (line.startsWith("[" + component + "] ") && line.contains(text)) {
+      if (line.startsWith(prefix) && line.contains(text)) {
         return true;
       }
     }

@@ -5,13 +5,10 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trade.TRADEContainer;
-import java.io.File;
-import java.net.URISyntaxException;
-import java.nio.file.Files;
+import dev.trade.examples.Jvms;
+import dev.trade.examples.Transcript;
 import java.nio.file.Path;
-import java.util.LinkedHashSet;
 import java.util.List;
-import java.util.Set;
 import java.util.UUID;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
@@ -31,24 +28,16 @@ class DemoLaunchTest {
 
   @AfterEach
   void stopLeftovers() {
-    if (launcher != null && launcher.isAlive()) {
-      launcher.descendants().forEach(ProcessHandle::destroyForcibly);
-      launcher.destroyForcibly();
-    }
+    Jvms.kill(launcher);
   }
 
   @Test
   void theDemoRunsItsScenarioAcrossJvmsAndExitsZero() throws Exception {
     long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(DEADLINE_SECONDS);
-    Path launchFile = projectRoot().resolve("config/demo.launch");
-    launcher = new ProcessBuilder(
-        Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-        "-cp", classpathOf(Launcher.class, TRADEContainer.class),
-        Launcher.class.getName(),
+    Path launchFile = Jvms.projectRoot().resolve("config/demo.launch");
+    launcher = Jvms.start(Jvms.classpathOf(Launcher.class, TRADEContainer.class), Launcher.class,
         "--set", "TRADESYSID=trade-demo-test-" + UUID.randomUUID().toString().substring(0, 8),
-        launchFile.toString())
-        .redirectErrorStream(true).start();
-    launcher.getOutputStream().close();
+        launchFile.toString());
     Transcript t = new Transcript(launcher.getInputStream());
 
     // The planner finds arm and camera by group and signature, and uses them.
@@ -84,28 +73,5 @@ class DemoLaunchTest {
     assertEquals(0, launcher.exitValue(), t.toString());
     assertFalse(t.contains("planner", "scenario failed"), t.toString());
     assertEquals(List.of(), launcher.descendants().toList(), "components left running");
-  }
-
-  /** The directory holding {@code config/demo.launch}: the working directory or a parent. */
-  static Path projectRoot() {
-    for (Path p = Path.of("").toAbsolutePath(); p != null; p = p.getParent()) {
-      if (Files.isRegularFile(p.resolve("config/demo.launch"))) {
-        return p;
-      }
-    }
-    throw new AssertionError("no config/demo.launch above " + Path.of("").toAbsolutePath());
-  }
-
-  /** A class path holding the given classes (their class directories or jars). */
-  static String classpathOf(Class<?>... classes) {
-    Set<String> entries = new LinkedHashSet<>();
-    for (Class<?> c : classes) {
-      try {
-        entries.add(Path.of(c.getProtectionDomain().getCodeSource().getLocation().toURI()).toString());
-      } catch (URISyntaxException e) {
-        throw new AssertionError(e);
-      }
-    }
-    return String.join(File.pathSeparator, entries);
   }
 }

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import dev.trade.examples.Jvms;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
@@ -105,7 +106,7 @@ class LaunchFileTest {
 
   @Test
   void theShippedDemoLaunchFileIsValid() throws Exception {
-    LaunchFile demo = LaunchFile.read(DemoLaunchTest.projectRoot().resolve("config/demo.launch"));
+    LaunchFile demo = LaunchFile.read(Jvms.projectRoot().resolve("config/demo.launch"));
     assertTrue(demo.properties().endsWith(Path.of("config", "demo.properties")), demo.properties().toString());
     assertEquals(List.of("arm", "head", "battery", "vision", "planner", "nav"),
         demo.components().stream().map(LaunchFile.Component::name).toList());

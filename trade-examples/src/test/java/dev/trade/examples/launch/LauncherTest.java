@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
+import dev.trade.examples.Jvms;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -43,7 +44,7 @@ class LauncherTest {
     LaunchFile launch = LaunchFile.parse(Path.of("test.launch"), file);
     ByteArrayOutputStream bytes = new ByteArrayOutputStream();
     PrintStream out = new PrintStream(bytes, true, StandardCharsets.UTF_8);
-    String classpath = DemoLaunchTest.classpathOf(ScriptMain.class);
+    String classpath = Jvms.classpathOf(ScriptMain.class);
     int status = assertTimeoutPreemptively(TIMEOUT,
         () -> new Launcher(launch, classpath, null, out).run());
     List<String> printed = new ArrayList<>();
