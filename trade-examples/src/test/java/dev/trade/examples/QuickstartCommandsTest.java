@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trade.TRADEContainer;
+import dev.trade.examples.launch.Launcher;
 import dev.trade.examples.robot.ComponentMain;
 import java.io.IOException;
 import java.net.InetAddress;
@@ -18,7 +19,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * The commands of docs/quickstart.md, with the shipped example configurations: an arm in one JVM,
- * {@link CallService} in another. The configurations are copied with a system id (and port) of
+ * {@link CallService} in another, by hand and from the example launch file. The configurations are copied with a system id (and port) of
  * the test's own appended, so that a quickstart running on this machine at the same time stays
  * apart; everything else is as shipped.
  */
@@ -70,6 +71,20 @@ class QuickstartCommandsTest {
     callOut.await(null, "closeGripper() @ arm returned", deadline);
     armOut.await(null, "closing gripper", deadline);
     assertExitsZero(call, callOut, deadline);
+  }
+
+  @Test
+  void theLaunchFileRunsBothWithOneCommand() throws Exception {
+    long deadline = deadline();
+    call = Jvms.start(Jvms.classpathOf(Launcher.class, TRADEContainer.class), Launcher.class,
+        "--set", "TRADESYSID=quickstart-test-" + UUID.randomUUID(),
+        Jvms.projectRoot().resolve("config/examples/arm-and-call.launch").toString());
+    Transcript out = new Transcript(call.getInputStream());
+    out.await("launch", "started call (after arm printed \"ready\")", deadline);
+    out.await("arm", "opening gripper at speed 40", deadline);
+    out.await("call", "openGripper(int) @ arm returned true", deadline);
+    out.await("launch", "done in", deadline);
+    assertExitsZero(call, out, deadline);
   }
 
   private static long deadline() {
