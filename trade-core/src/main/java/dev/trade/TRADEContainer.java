@@ -260,11 +260,18 @@ public final class TRADEContainer implements AutoCloseable {
     return core.neighbours();
   }
 
-  /** Deregisters every service of this container and disconnects it. Idempotent. */
+  /**
+   * Deregisters every service of this container and disconnects it. Idempotent.
+   *
+   * <p>Notifications of this container stop first: disconnecting makes every other container's
+   * services unreachable from here, and reporting them as "left" to listeners that are closing
+   * too would be false (they did not leave the system) and would call into components that are
+   * shutting down.
+   */
   @Override
   public void close() {
-    core.close();
     notifications.close();
+    core.close();
   }
 
   /** A service info for {@code d} whose calls go through this container. */

@@ -107,6 +107,20 @@ class NotificationsTest {
   }
 
   @Test
+  void closingAContainerReportsNothingToItsListeners() throws TRADEException {
+    TRADEContainer hub = container("hub", "STARTACCEPTINGCONNECTIONS", "true", "SERVERIPS", "127.0.0.1@0");
+    TRADEContainer arm = container("arm", "CONNECTCONTAINERS", hub.getServerAddresses().get(0));
+    arm.registerAllServices(new Gripper());
+    Recorder r = new Recorder();
+    hub.registerNotificationNowOrWhenJoined(r, new TRADEServiceConstraints().name("openGripper"), "joined");
+    hub.requestNotification(r, "left", null, null, "left");
+    Await.until(WAIT, () -> r.events.contains("joined openGripper@arm"), "joined from arm");
+    hub.close();
+    // The arm's service did not leave the system: the listener's own container went away.
+    assertEquals(List.of("joined openGripper@arm"), r.events);
+  }
+
+  @Test
   void aThrowingCallbackDoesNotStopOtherDeliveries() throws TRADEException {
     TRADEContainer trade = container("throws");
     Recorder r = new Recorder();

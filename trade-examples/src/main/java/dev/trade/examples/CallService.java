@@ -1,0 +1,169 @@
+package dev.trade.examples;
+
+import dev.trade.TRADEContainer;
+import dev.trade.TRADEException;
+import dev.trade.TRADEService;
+import dev.trade.TRADEServiceConstraints;
+import dev.trade.TRADEServiceInfo;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * Calls one service of a running TRADE system from the command line, from a container of its own:
+ *
+ * <pre>
+ * java -cp CLASSPATH dev.trade.examples.CallService [--config FILE] [--groups G1,G2] [--wait SECONDS]
+ *     SERVICE [ARGUMENT...]
+ * </pre>
+ *
+ * It waits (default 10 s) until a service named SERVICE, in all of the groups and taking as many
+ * parameters as there are arguments, is available, converts each argument to its parameter type
+ * (numbers, {@code true}/{@code false}, characters and strings), calls it and prints
+ * {@code openGripper(int) @ arm returned true}. Exit status: 0 when the call returned, 1 when it
+ * failed or no service came, 2 for bad arguments or configuration.
+ */
+public final class CallService {
+  private final Object joined = new Object();
+
+  private CallService() {}
+
+  /** The {@code joined} callback: wakes the waiting main thread. */
+  @TRADEService
+  public void serviceJoined(TRADEServiceInfo service) {
+    synchronized (joined) {
+      joined.notifyAll();
+    }
+  }
+
+  public static void main(String[] args) throws InterruptedException {
+    Path config = null;
+    List<String> groups = new ArrayList<>();
+    long waitSeconds = 10;
+    int i = 0;
+    try {
+      for (; i < args.length && args[i].startsWith("--"); i += 2) {
+        if (i + 1 >= args.length) {
+          throw new IllegalArgumentException(args[i] + " needs a value");
+        }
+        switch (args[i]) {
+          case "--config" -> config = Path.of(args[i + 1]);
+          case "--groups" -> groups = List.of(args[i + 1].split(","));
+          case "--wait" -> waitSeconds = Long.parseLong(args[i + 1]);
+          default -> throw new IllegalArgumentException("unknown option " + args[i]);
+        }
+      }
+      if (i >= args.length) {
+        throw new IllegalArgumentException("no service named");
+      }
+    } catch (IllegalArgumentException e) {
+      System.err.println(e.getMessage() + "\nusage: CallService [--config FILE] [--groups G1,G2]"
+          + " [--wait SECONDS] SERVICE [ARGUMENT...]");
+      System.exit(2);
+    }
+    ExampleContainers.configureLogging(false);
+    TRADEContainer trade;
+    try {
+      trade = ExampleContainers.start("call", config);
+    } catch (IllegalArgumentException e) {
+      System.err.println(e.getMessage());
+      System.exit(2);
+      return;
+    }
+    String name = args[i];
+    List<String> arguments = List.of(args).subList(i + 1, args.length);
+    TRADEServiceConstraints wanted =
+        new TRADEServiceConstraints().name(name).inGroups(groups.toArray(new String[0]));
+    int status;
+    try {
+      TRADEServiceInfo service = new CallService().await(trade, wanted, arguments.size(),
+          TimeUnit.SECONDS.toNanos(waitSeconds));
+      if (service == null) {
+        System.out.println("no service " + wanted + " with " + arguments.size()
+            + " parameters came within " + waitSeconds + " s");
+        status = 1;
+      } else {
+        Object result = service.call(Object.class, convert(service, arguments));
+        System.out.println(service.serviceString + " @ " + service.getContainerName()
+            + (service.serviceReturnTypeName.equals("void") ? " returned" : " returned " + result));
+        status = 0;
+      }
+    } catch (TRADEException e) {
+      System.out.println("failed: " + e.getClass().getSimpleName() + ": " + e.getMessage());
+      status = 1;
+    } catch (IllegalArgumentException e) {
+      System.out.println(e.getMessage());
+      status = 2;
+    }
+    trade.close();
+    System.exit(status);
+  }
+
+  /** The first service matching {@code wanted} with {@code arity} parameters, or null in time. */
+  private TRADEServiceInfo await(TRADEContainer trade, TRADEServiceConstraints wanted, int arity,
+      long timeoutNanos) throws TRADEException, InterruptedException {
+    long deadline = System.nanoTime() + timeoutNanos;
+    // Wakes us when something matching joins; the loop re-checks, so no join is missed.
+    trade.requestNotification(this, "joined", wanted, null, "serviceJoined");
+    synchronized (joined) {
+      while (true) {
+        for (TRADEServiceInfo s : trade.getAvailableServices(wanted)) {
+          if (s.serviceParameterTypeNames.length == arity) {
+            return s;
+          }
+        }
+        long remaining = deadline - System.nanoTime();
+        if (remaining <= 0) {
+          return null;
+        }
+        TimeUnit.NANOSECONDS.timedWait(joined, remaining);
+      }
+    }
+  }
+
+  /**
+   * The arguments as the service's parameter types.
+   *
+   * @throws IllegalArgumentException naming the argument that does not fit
+   */
+  static Object[] convert(TRADEServiceInfo service, List<String> arguments) {
+    Object[] values = new Object[arguments.size()];
+    for (int i = 0; i < values.length; i++) {
+      String type = service.serviceParameterTypeNames[i];
+      String text = arguments.get(i);
+      try {
+        values[i] = switch (type) {
+          case "int", "java.lang.Integer" -> Integer.valueOf(text);
+          case "long", "java.lang.Long" -> Long.valueOf(text);
+          case "short", "java.lang.Short" -> Short.valueOf(text);
+          case "byte", "java.lang.Byte" -> Byte.valueOf(text);
+          case "double", "java.lang.Double" -> Double.valueOf(text);
+          case "float", "java.lang.Float" -> Float.valueOf(text);
+          case "boolean", "java.lang.Boolean" -> bool(text);
+          case "char", "java.lang.Character" -> character(text);
+          case "java.lang.String", "java.lang.Object", "java.lang.CharSequence" -> text;
+          default -> throw new IllegalArgumentException("cannot be typed on a command line");
+        };
+      } catch (IllegalArgumentException e) {
+        throw new IllegalArgumentException("argument " + (i + 1) + " '" + text + "' of "
+            + service.serviceString + " is not of type " + type + ": " + e.getMessage());
+      }
+    }
+    return values;
+  }
+
+  private static Boolean bool(String text) {
+    if (!text.equals("true") && !text.equals("false")) {
+      throw new IllegalArgumentException("expected true or false");
+    }
+    return Boolean.valueOf(text);
+  }
+
+  private static Character character(String text) {
+    if (text.length() != 1) {
+      throw new IllegalArgumentException("expected one character");
+    }
+    return text.charAt(0);
+  }
+}
