@@ -1,0 +1,194 @@
+package dev.trade.examples.system;
+
+import dev.trade.TRADEContainer;
+import dev.trade.TRADEException;
+import dev.trade.TRADEService;
+import dev.trade.TRADEServiceConstraints;
+import dev.trade.TRADEServiceInfo;
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.net.Inet4Address;
+import java.net.InetAddress;
+import java.net.NetworkInterface;
+import java.net.SocketException;
+import java.nio.charset.StandardCharsets;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+
+/**
+ * One container of the multi-host system tests (src/system-tests): it plays a host of its own,
+ * registers a {@code whereAmI()} service in the group {@code host-<name>} and in {@code multihost},
+ * reports joined and left services of other containers, and calls services when told to.
+ *
+ * <p>Usage: {@code HostNode <name> [KEY=VALUE ...]}, where each {@code KEY=VALUE} is a TRADE setting
+ * (docs/configuration.md), for example {@code DISCOVERYRANGE=subnet DISCOVERYINTERFACES=veth-a}.
+ * Without settings the container discovers and announces in range {@code localhost}.
+ *
+ * <p>It prints one line per event on standard output, each ending in {@code t=<epoch ms>}:
+ *
+ * <pre>
+ * READY A id=&lt;container id&gt; pid=&lt;pid&gt; listening=[0.0.0.0@41247] t=...
+ * JOINED whereAmI()@B t=...
+ * LEFT whereAmI()@B t=...
+ * CALLED host-B -> B on [10.200.2.2] in 3 ms t=...
+ * CALL-FAILED host-B TRADEServiceNotFoundException: ... t=...
+ * SERVING whereAmIAfter(5000) t=...
+ * NEIGHBOURS &lt;id&gt;,&lt;id&gt; t=...
+ * BYE t=...
+ * </pre>
+ *
+ * <p>It reads commands, one a line, from standard input: {@code call <group>} (find
+ * {@code whereAmI()} in that group and call it), {@code call <group> <ms>} (the same with
+ * {@code whereAmIAfter(ms)}, which answers after that delay and prints {@code SERVING} where it
+ * runs), {@code neighbours}, and {@code quit}. Calls run on threads of their own. At the end
+ * of its input it closes the container and exits, so that it never outlives the test that drives
+ * it. Logs go to standard error.
+ */
+public final class HostNode {
+  private static final Duration CALL_TIMEOUT = Duration.ofSeconds(5);
+
+  /** The service every node provides: where it runs. */
+  public static final class Place {
+    private final String name;
+
+    Place(String name) {
+      this.name = name;
+    }
+
+    @TRADEService
+    public String whereAmI() {
+      return name + " on " + ipv4Addresses();
+    }
+
+    /** As {@link #whereAmI()}, answering after {@code millis} ms: a call that is in flight a while. */
+    @TRADEService
+    public String whereAmIAfter(long millis) throws InterruptedException {
+      say("SERVING whereAmIAfter(" + millis + ")");
+      Thread.sleep(millis);
+      return whereAmI();
+    }
+  }
+
+  /** Receives joined and left notifications; callbacks are services. */
+  public static final class Watcher {
+    @TRADEService
+    public void joined(TRADEServiceInfo info) {
+      if (!info.isLocal()) {
+        say("JOINED " + info.serviceString + "@" + info.getContainerName());
+      }
+    }
+
+    @TRADEService
+    public void left(TRADEServiceInfo info) {
+      if (!info.isLocal()) {
+        say("LEFT " + info.serviceString + "@" + info.getContainerName());
+      }
+    }
+  }
+
+  private HostNode() {}
+
+  public static void main(String[] args) throws Exception {
+    if (args.length < 1 || args[0].contains("=")) {
+      System.err.println("usage: HostNode <name> [KEY=VALUE ...]");
+      System.exit(2);
+    }
+    String name = args[0];
+    Map<String, String> settings = new TreeMap<>();
+    settings.put("CONTAINERNAME", name);
+    settings.put("STARTDISCOVERY", "true");
+    settings.put("STARTBROADCAST", "true");
+    for (int i = 1; i < args.length; i++) {
+      int eq = args[i].indexOf('=');
+      if (eq <= 0) {
+        System.err.println("not a KEY=VALUE setting: " + args[i]);
+        System.exit(2);
+      }
+      settings.put(args[i].substring(0, eq), args[i].substring(eq + 1));
+    }
+    TRADEContainer.Builder builder = TRADEContainer.builder();
+    settings.forEach(builder::property);
+
+    try (TRADEContainer container = builder.build()) {
+      Watcher watcher = new Watcher();
+      TRADEServiceConstraints whereAmI = new TRADEServiceConstraints().name("whereAmI").argTypes();
+      container.requestNotification(watcher, "joined", whereAmI, null, "joined");
+      container.requestNotification(watcher, "left", whereAmI, null, "left");
+      container.registerAllServices(new Place(name), "host-" + name, "multihost");
+      say("READY " + name + " id=" + container.getId() + " pid=" + ProcessHandle.current().pid()
+          + " listening=" + container.getServerAddresses());
+
+      BufferedReader in = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8));
+      String line;
+      while ((line = in.readLine()) != null) {
+        String[] words = line.trim().split("\\s+");
+        if (words[0].isEmpty()) {
+          continue;
+        }
+        if (words[0].equals("quit")) {
+          break;
+        } else if (words[0].equals("call") && (words.length == 2 || words.length == 3)) {
+          // On a thread of its own, so that commands go on while a call is in flight.
+          long delay = words.length == 3 ? Long.parseLong(words[2]) : -1;
+          Thread t = new Thread(() -> call(container, words[1], delay), "call " + words[1]);
+          t.setDaemon(true);
+          t.start();
+        } else if (words[0].equals("neighbours")) {
+          say("NEIGHBOURS " + String.join(",", container.getNeighbours()));
+        } else {
+          say("UNKNOWN-COMMAND " + line.trim());
+        }
+      }
+    }
+    say("BYE");
+  }
+
+  /** Finds whereAmI() (or, with a delay, whereAmIAfter(long)) in {@code group} and calls it. */
+  private static void call(TRADEContainer container, String group, long delay) {
+    long start = System.nanoTime();
+    try {
+      TRADEServiceConstraints c = new TRADEServiceConstraints().inGroups(group);
+      if (delay < 0) {
+        c.name("whereAmI").argTypes();
+      } else {
+        c.name("whereAmIAfter").argTypes(long.class);
+      }
+      TRADEServiceInfo info = container.getAvailableService(c);
+      Duration timeout = CALL_TIMEOUT.plusMillis(Math.max(0, delay));
+      String answer = delay < 0 ? info.withTimeout(timeout).call(String.class)
+          : info.withTimeout(timeout).call(String.class, delay);
+      say("CALLED " + group + " -> " + answer + " in "
+          + Duration.ofNanos(System.nanoTime() - start).toMillis() + " ms");
+    } catch (TRADEException e) {
+      say("CALL-FAILED " + group + " " + e.getClass().getSimpleName() + ": " + e.getMessage());
+    }
+  }
+
+  /** This namespace's IPv4 addresses other than loopback: which host answered. */
+  static List<String> ipv4Addresses() {
+    List<String> result = new ArrayList<>();
+    try {
+      for (NetworkInterface nif : Collections.list(NetworkInterface.getNetworkInterfaces())) {
+        for (InetAddress a : Collections.list(nif.getInetAddresses())) {
+          if (a instanceof Inet4Address && !a.isLoopbackAddress()) {
+            result.add(a.getHostAddress());
+          }
+        }
+      }
+    } catch (SocketException e) {
+      result.add("?");
+    }
+    Collections.sort(result);
+    return result;
+  }
+
+  private static synchronized void say(String line) {
+    System.out.println(line + " t=" + System.currentTimeMillis());
+    System.out.flush();
+  }
+}
