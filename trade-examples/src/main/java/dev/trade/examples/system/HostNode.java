@@ -115,10 +115,12 @@ public final class HostNode {
     settings.forEach(builder::property);
 
     try (TRADEContainer container = builder.build()) {
+      // The container is networked as soon as it is built, so other containers' services may
+      // have joined already: "now or when joined" reports those too, each exactly once.
       Watcher watcher = new Watcher();
       TRADEServiceConstraints whereAmI = new TRADEServiceConstraints().name("whereAmI").argTypes();
-      container.requestNotification(watcher, "joined", whereAmI, null, "joined");
       container.requestNotification(watcher, "left", whereAmI, null, "left");
+      container.registerNotificationNowOrWhenJoined(watcher, whereAmI, "joined");
       container.registerAllServices(new Place(name), "host-" + name, "multihost");
       say("READY " + name + " id=" + container.getId() + " pid=" + ProcessHandle.current().pid()
           + " listening=" + container.getServerAddresses());
