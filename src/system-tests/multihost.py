@@ -326,6 +326,12 @@ class Node:
                                       (self.host, pattern, timeout, self._context()))
                 self.cond.wait(min(left, 0.2))
 
+    def pending(self, pattern):
+        """Whether the current process printed a line matching pattern that no expectation took."""
+        regex = re.compile(pattern)
+        with self.cond:
+            return any(not l.consumed and regex.search(l.text) for l in self.lines)
+
     def unconsumed(self, pattern):
         """(incarnation, line) of every process's lines matching pattern that no expectation
         took, up to its quit command (a container that closes sees every other one leave)."""
@@ -407,6 +413,7 @@ class Scenario:
         self.log_dir = log_dir
         self.nodes = {h: Node(self.topology, h, log_dir) for h in "ABC"}
         self.results = []
+        self.catching_up = None     # (from, to): while a woken C caught up (step 9)
 
     def step(self, title, fn):
         if any(not ok for _, ok, _ in self.results):
@@ -542,52 +549,65 @@ class Scenario:
             for n, others in ((A, "BC"), (B, "AC")):
                 for other in others:
                     times.append(n.expect(joined(other), REJOIN_S).stamp - t0)
-            ab = call(A, "host-B", "B on [10.200.2.2]")
-            ba = call(B, "host-A", "A on [10.200.1.1]")
-            # C slept through it all. Whether it sees A or B leave and join again depends on a race
-            # it cannot see: if a new link from a neighbour arrives before C has read the end of
-            # the old one, the new link replaces the old one and nothing left. Either way C ends
-            # up with both, and every LEFT it printed is followed by a JOINED.
-            seen = []
-            for other in "AB":
-                if C.unconsumed(left(other)):
-                    C.expect(left(other), 0)
-                    C.expect(joined(other), REJOIN_S)
-                    seen.append(other)
-            ca = call(C, "host-A", "A on [10.200.1.1]")
-            cb = call(C, "host-B", "B on [10.200.2.2]")
-            return ("C resumed (SIGCONT): A and B saw it rejoin within %.2f s; C saw %s; calls A->B %s ms,"
-                    " B->A %s ms, C->A %s ms, C->B %s ms" % (
-                        max(times), "%s leave and rejoin" % " and ".join(seen) if seen else "no one leave",
-                        ab, ba, ca, cb))
+            calls = []
+            for n, group, answer in ((A, "host-B", "B on [10.200.2.2]"), (B, "host-A", "A on [10.200.1.1]"),
+                                     (C, "host-A", "A on [10.200.1.1]"), (C, "host-B", "B on [10.200.2.2]")):
+                calls.append("%s->%s %s ms" % (n.host, group[-1], call(n, group, answer)))
+            # C slept through FAILURETIMEOUT and wakes with a stale view: until it has read the
+            # end of the links its neighbours closed, it still lists them, may pass that on to the
+            # first neighbour that links again, and then takes it back. So a host may see a service
+            # leave and join again while C catches up (and C itself may see nothing leave, when a
+            # new link replaces an old one before C has read its end). Accepted: a LEFT followed
+            # by a JOINED. Not accepted: a service that stays away (the calls above) or flaps later.
+            transients = []
+            for n in (A, B, C):
+                for other in "ABC".replace(n.host, ""):
+                    while n.pending(left(other)):
+                        n.expect(left(other), 0)
+                        n.expect(joined(other), REJOIN_S)
+                        transients.append("%s saw %s leave and rejoin" % (n.host, other))
+            self.catching_up = (t0, time.time())
+            return "C resumed (SIGCONT): A and B saw it rejoin within %.2f s; %s; calls %s" % (
+                max(times), ", ".join(transients) if transients else "no transient left/joined",
+                ", ".join(calls))
 
         def shutdown():
-            t0 = time.time()
-            A.send("quit")
-            A.expect(r"^BYE ", STEP_S)
-            status = A.wait_exit(STEP_S)
-            if status != 0:
-                raise StepFailure("A exited with status %d" % status)
+            # One after the other; each one's goodbye makes the others print LEFT for it at once.
             delays = []
-            for n in (B, C):
-                delays.append(n.expect(left("A"), STEP_S).stamp - t0)
-            for n in (B, C):
+            for n, rest in ((A, (B, C)), (B, (C,)), (C, ())):
+                t0 = time.time()
                 n.send("quit")
-            for n in (B, C):
                 n.expect(r"^BYE ", STEP_S)
                 status = n.wait_exit(STEP_S)
                 if status != 0:
                     raise StepFailure("%s exited with status %d" % (n.host, status))
-            return "A quit: left on B and C within %.0f ms; all exited with status 0" % (max(delays) * 1000)
+                for other in rest:
+                    delays.append(other.expect(left(n.host), STEP_S).stamp - t0)
+            return "A, B and C quit in turn; the others saw each leave within %.0f ms; all exited with status 0" % (
+                max(delays) * 1000)
 
         def nothing_else():
-            extra = []
+            extra, late = [], []
             for n in (A, B, C):
-                for incarnation, l in n.unconsumed(r"^(JOINED|LEFT|UNKNOWN|CALL)"):
+                lines = n.unconsumed(r"^(JOINED|LEFT|UNKNOWN|CALL)")
+                for i, (incarnation, l) in enumerate(lines):
+                    if l.consumed:
+                        continue
+                    # A LEFT printed while C caught up after waking, and its JOINED, seen too late
+                    # by step 9 (they are printed on the notification thread).
+                    m = re.match(r"^LEFT (\S+) ", l.text)
+                    if m and self.catching_up and self.catching_up[0] <= l.stamp <= self.catching_up[1]:
+                        rejoin = [x for _, x in lines[i + 1:] if x.text.startswith("JOINED %s " % m.group(1))
+                                  and not x.consumed]
+                        if rejoin:
+                            l.consumed = rejoin[0].consumed = True
+                            late.append("%s saw %s leave and rejoin" % (n.host, m.group(1)))
+                            continue
                     extra.append("%s-%d: %s" % (n.host, incarnation, l.text))
             if extra:
                 raise StepFailure("unexpected events: " + "; ".join(extra))
-            return "no event but the expected ones"
+            return "no event but the expected ones" + (
+                " (while C caught up after waking: %s)" % ", ".join(late) if late else "")
 
         self.step("topology: two subnets, C on both, no IP route between A and B", topology)
         self.step("discovery by multicast within each subnet (DISCOVERYRANGE=subnet)", discovery)
