@@ -9,7 +9,7 @@ import java.io.OutputStream;
 import java.net.Socket;
 import java.util.ArrayDeque;
 import java.util.UUID;
-import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicReference;
 
 /**
  * One authenticated connection to a neighbouring container.
@@ -38,7 +38,8 @@ final class Link {
   private final OutputStream out;
   private final int maxFrame;
   private final ArrayDeque<byte[]> queue = new ArrayDeque<>();
-  private final AtomicBoolean closed = new AtomicBoolean();
+  /** Null while open; then why the link was closed, set once by whoever closed it first. */
+  private final AtomicReference<String> closed = new AtomicReference<>();
   // Guarded by queue.
   private boolean writing;
   volatile long lastReceived = System.nanoTime();
@@ -69,7 +70,7 @@ final class Link {
    */
   void send(byte[] frame) throws IOException {
     synchronized (queue) {
-      if (closed.get()) {
+      if (closed.get() != null) {
         throw new IOException("link to " + peerName + " is closed");
       }
       if (writing) {
@@ -112,7 +113,7 @@ final class Link {
   private void readLoop(Handler handler) {
     String reason = "closed";
     try {
-      while (!closed.get()) {
+      while (closed.get() == null) {
         int length;
         try {
           length = in.readInt();
@@ -137,21 +138,23 @@ final class Link {
         handler.frame(this, type, payload);
       }
     } catch (IOException e) {
-      reason = closed.get() ? "closed" : "connection to " + peerName + " lost: " + e.getMessage();
+      reason = "connection to " + peerName + " lost: " + e.getMessage();
     } catch (RuntimeException e) {
       reason = "malformed frame from " + peerName + ": " + e;
     }
     close(reason);
-    handler.closed(this, reason);
+    // When another thread closed the link first (heartbeat, duplicate link, bad replication frame),
+    // our read failed because of that: report its reason, not the socket error it caused.
+    handler.closed(this, closed.get());
   }
 
   boolean isClosed() {
-    return closed.get();
+    return closed.get() != null;
   }
 
-  /** Closes the socket (which also ends the reader thread); idempotent. */
+  /** Closes the socket (which also ends the reader thread); idempotent: the first reason counts. */
   void close(String reason) {
-    if (closed.compareAndSet(false, true)) {
+    if (closed.compareAndSet(null, reason)) {
       try {
         socket.close();
       } catch (IOException ignored) {
