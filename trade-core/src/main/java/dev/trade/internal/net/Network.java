@@ -254,10 +254,17 @@ public final class Network implements AutoCloseable {
     long silence = settings.failureTimeout().toNanos();
     byte[] ping = Frames.finish(Frames.start(Wire.PING, 0));
     for (Link l : links.values()) {
-      if (now - l.lastReceived > silence) {
-        l.close("silent for " + TimeUnit.NANOSECONDS.toMillis(now - l.lastReceived)
-            + " ms (FAILURETIMEOUT=" + settings.failureTimeout().toMillis() + ")");
-      } else if (now - l.lastSent >= interval) {
+      long quiet = now - l.lastReceived;
+      if (quiet >= silence) {
+        closeSilent(l, quiet);
+        continue;
+      }
+      if (silence - quiet < interval) {
+        // It would pass FAILURETIMEOUT before the next beat: look again exactly then, so that a
+        // silent peer is declared gone after FAILURETIMEOUT, not up to one interval later.
+        timer.schedule(() -> checkSilence(l), silence - quiet, TimeUnit.NANOSECONDS);
+      }
+      if (now - l.lastSent >= interval) {
         try {
           l.send(ping);
         } catch (IOException e) {
@@ -265,6 +272,18 @@ public final class Network implements AutoCloseable {
         }
       }
     }
+  }
+
+  private void checkSilence(Link l) {
+    long quiet = System.nanoTime() - l.lastReceived;
+    if (!l.isClosed() && quiet >= settings.failureTimeout().toNanos()) {
+      closeSilent(l, quiet);
+    }
+  }
+
+  private void closeSilent(Link l, long quietNanos) {
+    l.close("silent for " + TimeUnit.NANOSECONDS.toMillis(quietNanos)
+        + " ms (FAILURETIMEOUT=" + settings.failureTimeout().toMillis() + ")");
   }
 
   /** Says goodbye to every neighbour, closes all links and stops all threads. */
