@@ -20,6 +20,7 @@ import java.util.UUID;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.TimeUnit;
@@ -170,7 +171,7 @@ public final class Network implements AutoCloseable {
     if (initiatedHere) {
       dialled.put((InetSocketAddress) socket.getRemoteSocketAddress(), peer.containerId());
     }
-    control.execute(() -> {
+    boolean accepted = onControl(() -> {
       if (closed) {
         link.close("container closing");
         return;
@@ -194,6 +195,25 @@ public final class Network implements AutoCloseable {
       link.start(handler);
       replication.linkUp(link);
     });
+    if (!accepted) {
+      link.close("container closing");
+    }
+  }
+
+  /**
+   * Runs {@code task} on the control thread; false if the container has closed. Then there is no
+   * control thread and no state left to update: link readers that end then must not fail for it.
+   */
+  private boolean onControl(Runnable task) {
+    try {
+      control.execute(task);
+      return true;
+    } catch (RejectedExecutionException e) {
+      if (!closed) {
+        throw e;
+      }
+      return false;
+    }
   }
 
   private UUID initiator(Link l) {
@@ -224,7 +244,7 @@ public final class Network implements AutoCloseable {
         case Wire.TABLE:
         case Wire.DELTA:
         case Wire.TABLE_REQUEST:
-          control.execute(() -> replication.received(link, type, payload));
+          onControl(() -> replication.received(link, type, payload));
           break;
         default:
           throw new IOException("unknown frame type " + type);
@@ -233,7 +253,7 @@ public final class Network implements AutoCloseable {
 
     @Override
     public void closed(Link link, String reason) {
-      control.execute(() -> {
+      onControl(() -> {
         if (links.remove(link.peerId, link)) {
           LOG.log(closed ? Level.DEBUG : Level.INFO, "{0}: link to {1} closed: {2}", name,
               link.peerName, reason);
