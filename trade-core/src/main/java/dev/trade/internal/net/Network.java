@@ -180,7 +180,7 @@ public final class Network implements AutoCloseable {
       if (existing != null && !existing.isClosed()) {
         // Two links to one container (both dialled at once): keep the one dialled by the container
         // with the smaller id, as the other side decides the same.
-        UUID keptInitiator = initiator(existing).compareTo(initiator(link)) <= 0
+        UUID keptInitiator = compareIds(initiator(existing), initiator(link)) <= 0
             ? initiator(existing) : initiator(link);
         Link drop = initiator(link).equals(keptInitiator) ? existing : link;
         if (drop == link) {
@@ -218,6 +218,16 @@ public final class Network implements AutoCloseable {
 
   private UUID initiator(Link l) {
     return l.initiatedHere ? self : l.peerId;
+  }
+
+  /**
+   * Orders container ids by their 16 bytes as unsigned numbers, the order of RFC 4122 and of other
+   * languages' UUID types. Not {@link UUID#compareTo}, which compares signed halves: containers
+   * written in another language would then keep a different one of two duplicate links.
+   */
+  static int compareIds(UUID a, UUID b) {
+    int c = Long.compareUnsigned(a.getMostSignificantBits(), b.getMostSignificantBits());
+    return c != 0 ? c : Long.compareUnsigned(a.getLeastSignificantBits(), b.getLeastSignificantBits());
   }
 
   private final Link.Handler handler = new Link.Handler() {
