@@ -14,8 +14,12 @@ import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ExecutorService;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.SynchronousQueue;
+import java.util.concurrent.ThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
 
 /**
  * Makes authenticated links: accepts connections on the listen addresses and connects to peers,
@@ -28,6 +32,12 @@ final class Connector {
   private static final Logger LOG = System.getLogger("dev.trade.net");
   private static final long MIN_BACKOFF_MS = 50;
   private static final long MAX_BACKOFF_MS = 2_000;
+  /**
+   * The most inbound handshakes in progress at once. Each holds a thread until the peer finishes or
+   * TIMEOUT_CLIENT_SOCKET passes, and before authentication anyone may connect: without a bound, a
+   * flood of connections that never send their HELLO would grow threads without limit.
+   */
+  static final int MAX_HANDSHAKES = 64;
 
   /** Receives every link whose handshake succeeded. */
   interface Sink {
@@ -40,19 +50,31 @@ final class Connector {
   private final Handshake handshake;
   private final int connectTimeoutMs;
   private final ExecutorService workers;
+  private final ThreadPoolExecutor handshakes;
   private final ScheduledExecutorService timer;
   private final Sink sink;
   private final List<ServerSocket> servers = new CopyOnWriteArrayList<>();
   private final Map<InetSocketAddress, Long> backoff = new ConcurrentHashMap<>();
   private volatile boolean closed;
 
-  Connector(Handshake handshake, int connectTimeoutMs, ExecutorService workers,
+  /**
+   * @param name the container's name, for thread names
+   * @param workers runs outbound connects
+   */
+  Connector(String name, Handshake handshake, int connectTimeoutMs, ExecutorService workers,
       ScheduledExecutorService timer, Sink sink) {
     this.handshake = handshake;
     this.connectTimeoutMs = connectTimeoutMs;
     this.workers = workers;
     this.timer = timer;
     this.sink = sink;
+    AtomicInteger n = new AtomicInteger();
+    this.handshakes = new ThreadPoolExecutor(0, MAX_HANDSHAKES, 1, TimeUnit.SECONDS,
+        new SynchronousQueue<>(), r -> {
+          Thread t = new Thread(r, "trade-handshake-" + name + "-" + n.incrementAndGet());
+          t.setDaemon(true);
+          return t;
+        });
   }
 
   /** Binds a listening socket (port 0: any free port) and starts accepting; returns its address. */
@@ -155,19 +177,26 @@ final class Connector {
         LOG.log(Level.WARNING, "accept failed on {0}: {1}", server.getLocalSocketAddress(), e);
         continue;
       }
-      workers.execute(() -> {
-        try {
-          handshakeAndHandOver(socket, false);
-        } catch (IOException | Handshake.Failure | RuntimeException e) {
-          LOG.log(Level.WARNING, "refused connection from {0}: {1}",
-              socket.getRemoteSocketAddress(), e.getMessage());
+      try {
+        handshakes.execute(() -> {
           try {
-            socket.close();
-          } catch (IOException ignored) {
-            // Already failing; nothing more to tell.
+            handshakeAndHandOver(socket, false);
+          } catch (IOException | Handshake.Failure | RuntimeException e) {
+            refused(socket, e.getMessage());
           }
-        }
-      });
+        });
+      } catch (RejectedExecutionException e) {
+        refused(socket, closed ? "closing" : MAX_HANDSHAKES + " handshakes in progress already");
+      }
+    }
+  }
+
+  private static void refused(Socket socket, String reason) {
+    LOG.log(Level.WARNING, "refused connection from {0}: {1}", socket.getRemoteSocketAddress(), reason);
+    try {
+      socket.close();
+    } catch (IOException ignored) {
+      // Already failing; nothing more to tell.
     }
   }
 
@@ -194,6 +223,7 @@ final class Connector {
 
   void close() {
     closed = true;
+    handshakes.shutdownNow();
     for (ServerSocket s : servers) {
       try {
         s.close();

@@ -85,7 +85,7 @@ public final class Network implements AutoCloseable {
     this.replication = new Replication(self, registry, tableCodec, links, calls);
     Handshake handshake = new Handshake(new Handshake.Identity(settings.tradeSysId(), self, name,
         host, List.of()), settings.credentials());
-    this.connector = new Connector(handshake, (int) settings.clientSocketTimeout().toMillis(),
+    this.connector = new Connector(name, handshake, (int) settings.clientSocketTimeout().toMillis(),
         workers, timer, new Connector.Sink() {
           @Override
           public void linked(Socket socket, Handshake.Peer peer, boolean initiatedHere) {
