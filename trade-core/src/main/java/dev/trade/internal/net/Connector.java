@@ -20,6 +20,7 @@ import java.util.concurrent.SynchronousQueue;
 import java.util.concurrent.ThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
 
 /**
  * Makes authenticated links: accepts connections on the listen addresses and connects to peers,
@@ -55,6 +56,8 @@ final class Connector {
   private final Sink sink;
   private final List<ServerSocket> servers = new CopyOnWriteArrayList<>();
   private final Map<InetSocketAddress, Long> backoff = new ConcurrentHashMap<>();
+  /** Per kept address, the number of its one live retry chain; older chains end at their next step. */
+  private final Map<InetSocketAddress, AtomicLong> chains = new ConcurrentHashMap<>();
   private volatile boolean closed;
 
   /**
@@ -102,8 +105,8 @@ final class Connector {
 
   /** Keeps a link to {@code address}: connects now, retries with backoff, reconnects after loss. */
   void keepConnected(InetSocketAddress address) {
-    backoff.put(address, MIN_BACKOFF_MS);
-    timer.execute(() -> attempt(address));
+    chains.putIfAbsent(address, new AtomicLong());
+    restart(address);
   }
 
   /** Connects once to an address heard from discovery (no retries: it announces again). */
@@ -119,39 +122,48 @@ final class Connector {
 
   /** Retries every kept address now (a link was lost). */
   void retryNow() {
-    for (InetSocketAddress a : backoff.keySet()) {
-      backoff.put(a, MIN_BACKOFF_MS);
-      timer.execute(() -> attempt(a));
+    for (InetSocketAddress a : chains.keySet()) {
+      restart(a);
     }
   }
 
-  private void attempt(InetSocketAddress address) {
-    if (closed) {
+  /**
+   * Starts a new retry chain for {@code address} at once, ending the current one: each chain
+   * reschedules itself forever, so without this every lost link would add one more.
+   */
+  private void restart(InetSocketAddress address) {
+    long chain = chains.get(address).incrementAndGet();
+    backoff.put(address, MIN_BACKOFF_MS);
+    timer.execute(() -> attempt(address, chain));
+  }
+
+  private void attempt(InetSocketAddress address, long chain) {
+    if (closed || chains.get(address).get() != chain) {
       return;
     }
     long delay = backoff.getOrDefault(address, MIN_BACKOFF_MS);
     if (sink.isLinked(address)) {
       // Linked already (maybe the peer connected to us): look again later, cheaply.
-      timer.schedule(() -> attempt(address), MAX_BACKOFF_MS, TimeUnit.MILLISECONDS);
+      schedule(address, chain, MAX_BACKOFF_MS);
       return;
     }
     workers.execute(() -> {
       try {
         connect(address);
         backoff.put(address, MIN_BACKOFF_MS);
-        schedule(address, MAX_BACKOFF_MS);
-      } catch (IOException | Handshake.Failure e) {
+        schedule(address, chain, MAX_BACKOFF_MS);
+      } catch (IOException | Handshake.Failure | RuntimeException e) {
         LOG.log(delay >= MAX_BACKOFF_MS ? Level.INFO : Level.DEBUG,
             "cannot connect to {0}: {1}; retrying in {2} ms", address, e.getMessage(), delay);
         backoff.put(address, Math.min(MAX_BACKOFF_MS, delay * 2));
-        schedule(address, delay);
+        schedule(address, chain, delay);
       }
     });
   }
 
-  private void schedule(InetSocketAddress address, long delayMs) {
+  private void schedule(InetSocketAddress address, long chain, long delayMs) {
     if (!closed) {
-      timer.schedule(() -> attempt(address), delayMs, TimeUnit.MILLISECONDS);
+      timer.schedule(() -> attempt(address, chain), delayMs, TimeUnit.MILLISECONDS);
     }
   }
 
