@@ -8,6 +8,7 @@ import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.net.SocketException;
+import java.net.SocketTimeoutException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -16,9 +17,11 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.SynchronousQueue;
 import java.util.concurrent.ThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 
@@ -217,6 +220,18 @@ final class Connector {
     socket.setTcpNoDelay(true);
     socket.setKeepAlive(true);
     socket.setSoTimeout(connectTimeoutMs);
+    // SO_TIMEOUT bounds each read, not the handshake: a peer that sends a byte now and then would
+    // hold this thread for hours. Closing the socket at the deadline bounds all of it.
+    AtomicBoolean settled = new AtomicBoolean(); // by the deadline or by the end of the handshake
+    ScheduledFuture<?> deadline = timer.schedule(() -> {
+      if (settled.compareAndSet(false, true)) {
+        try {
+          socket.close();
+        } catch (IOException ignored) {
+          // The reading thread fails either way.
+        }
+      }
+    }, connectTimeoutMs, TimeUnit.MILLISECONDS);
     Handshake.Peer peer;
     try {
       peer = handshake.run(socket.getInputStream(), socket.getOutputStream());
@@ -224,9 +239,21 @@ final class Connector {
       LOG.log(Level.WARNING, "handshake with {0} failed: {1}", socket.getRemoteSocketAddress(),
           e.getMessage());
       throw e;
+    } catch (IOException e) {
+      throw e instanceof SocketTimeoutException || !settled.compareAndSet(false, true) ? tooSlow() : e;
+    } finally {
+      deadline.cancel(false);
+    }
+    if (!settled.compareAndSet(false, true)) {
+      throw tooSlow(); // the deadline closed the socket just now
     }
     socket.setSoTimeout(0); // from now on heartbeats tell a silent peer
     sink.linked(socket, peer, initiatedHere);
+  }
+
+  private IOException tooSlow() {
+    return new IOException("handshake not finished within TIMEOUT_CLIENT_SOCKET=" + connectTimeoutMs
+        + " ms");
   }
 
   static boolean isWildcard(InetAddress a) {

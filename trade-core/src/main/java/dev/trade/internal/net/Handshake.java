@@ -208,7 +208,11 @@ final class Handshake {
       throw new Failure(Wire.REFUSE_MALFORMED, "bad handshake frame length " + length);
     }
     byte[] frame = new byte[length];
-    in.readFully(frame);
+    try {
+      in.readFully(frame);
+    } catch (EOFException e) {
+      throw new IOException("peer closed the connection during the handshake");
+    }
     ByteBuffer b = ByteBuffer.wrap(frame);
     int version = b.get() & 0xff;
     int type = b.get() & 0xff;
