@@ -53,9 +53,24 @@ final class Handshake {
   private final Identity self;
   private final byte[] key;
 
+  /**
+   * @throws IllegalArgumentException if the system id, name or host does not fit a handshake field
+   *     (255 bytes of UTF-8); the message names the configuration key
+   */
   Handshake(Identity self, String credentials) {
+    checkField("TRADESYSID", self.systemId());
+    checkField("CONTAINERNAME", self.name());
+    checkField("the host name", self.host());
     this.self = self;
     this.key = deriveKey(self.systemId(), credentials);
+  }
+
+  private static void checkField(String what, String value) {
+    int length = value.getBytes(StandardCharsets.UTF_8).length;
+    if (length > MAX_STRING) {
+      throw new IllegalArgumentException(what + " is " + length + " bytes long in UTF-8, but the"
+          + " connection handshake carries at most " + MAX_STRING + ": " + value);
+    }
   }
 
   /**
