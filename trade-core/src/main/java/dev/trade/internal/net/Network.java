@@ -81,7 +81,7 @@ public final class Network implements AutoCloseable {
       public Object invoke(Invocation call) throws TRADEException {
         return provider.invoke(call);
       }
-    }, workers);
+    }, workers, settings.maxFrameSize());
     this.replication = new Replication(self, registry, tableCodec, links, calls);
     Handshake handshake = new Handshake(new Handshake.Identity(settings.tradeSysId(), self, name,
         host, List.of()), settings.credentials());

@@ -58,15 +58,18 @@ final class RemoteCalls {
   private final Router router;
   private final Host host;
   private final Executor executor;
+  private final int maxFrame;
   private final AtomicLong nextId = new AtomicLong();
   private final Map<Long, Pending> pending = new ConcurrentHashMap<>();
 
-  RemoteCalls(UUID self, Codec codec, Router router, Host host, Executor executor) {
+  /** @param maxFrame MAXFRAMESIZE: the largest frame, counted as its length field does */
+  RemoteCalls(UUID self, Codec codec, Router router, Host host, Executor executor, int maxFrame) {
     this.self = self;
     this.codec = codec;
     this.router = router;
     this.host = host;
     this.executor = executor;
+    this.maxFrame = maxFrame;
   }
 
   /** Calls a service of another container and waits for its reply until the deadline. */
@@ -79,16 +82,13 @@ final class RemoteCalls {
     }
     long id = nextId.incrementAndGet();
     long remaining = deadlineNanos - System.nanoTime();
-    ByteSink out = Frames.start(Wire.CALL, 64);
-    Frames.writeRouting(out, self, destination, Wire.MAX_HOPS);
-    out.writeLong(id);
-    out.writeLong(d.serviceId());
-    out.writeInt((int) Math.min(Integer.MAX_VALUE, Math.max(1, TimeUnit.NANOSECONDS.toMillis(remaining))));
-    out.writeVarUInt(args.length);
-    for (Object a : args) {
-      codec.write(a, out);
+    byte[] frame = callFrame(destination, id, d.serviceId(),
+        (int) Math.min(Integer.MAX_VALUE, Math.max(1, TimeUnit.NANOSECONDS.toMillis(remaining))), args);
+    if (tooLarge(frame.length)) {
+      // The receiver would close the link, failing every other call on it too.
+      throw new TRADESerializationException("The arguments of " + d.signature() + " need a frame of "
+          + (frame.length - 4) + " bytes, more than MAXFRAMESIZE=" + maxFrame);
     }
-    byte[] frame = Frames.finish(out);
     Pending p = new Pending(new CompletableFuture<>(), destination, link.peerId);
     pending.put(id, p);
     try {
@@ -116,6 +116,21 @@ final class RemoteCalls {
       throw new TRADEException("Interrupted while waiting for " + d.signature());
     }
     return decodeReply(d, reply, loader);
+  }
+
+  /** A CALL frame from this container. */
+  byte[] callFrame(UUID destination, long requestId, long serviceId, int timeoutMs, Object[] args)
+      throws TRADESerializationException {
+    ByteSink out = Frames.start(Wire.CALL, 64);
+    Frames.writeRouting(out, self, destination, Wire.MAX_HOPS);
+    out.writeLong(requestId);
+    out.writeLong(serviceId);
+    out.writeInt(timeoutMs);
+    out.writeVarUInt(args.length);
+    for (Object a : args) {
+      codec.write(a, out);
+    }
+    return Frames.finish(out);
   }
 
   private Object decodeReply(ServiceDescriptor d, byte[] payload, ClassLoader loader)
@@ -221,15 +236,25 @@ final class RemoteCalls {
             + " cannot travel: " + e.getMessage());
         return;
       }
+      if (tooLarge(out.size())) {
+        reply(payload, Wire.FAILED_SERIALIZATION, "The result of " + d.signature()
+            + " needs a frame of " + (out.size() - 4) + " bytes, more than MAXFRAMESIZE=" + maxFrame);
+        return;
+      }
       sendReply(payload, Frames.finish(out));
     } catch (TRADEInvocationException e) {
       ByteSink out = replyStart(payload, Wire.FAILED_INVOCATION);
       try {
         codec.write(e.getCause(), out);
-        sendReply(payload, Frames.finish(out));
       } catch (TRADESerializationException notEncodable) {
         reply(payload, Wire.FAILED_OTHER, e.getMessage());
+        return;
       }
+      if (tooLarge(out.size())) {
+        reply(payload, Wire.FAILED_OTHER, e.getMessage());
+        return;
+      }
+      sendReply(payload, Frames.finish(out));
     } catch (TRADEServiceUnavailableException e) {
       reply(payload, Wire.FAILED_UNAVAILABLE, e.getMessage());
     } catch (TRADEBadArgumentsException e) {
@@ -243,6 +268,11 @@ final class RemoteCalls {
     }
   }
 
+  /** Whether a frame of {@code size} bytes, length field included, exceeds MAXFRAMESIZE. */
+  private boolean tooLarge(int size) {
+    return size - 4 > maxFrame;
+  }
+
   /** A reply frame's start: routing back to the caller, the request id and a status. */
   private ByteSink replyStart(byte[] call, int status) {
     ByteSink out = Frames.start(Wire.REPLY, 64);
@@ -254,8 +284,17 @@ final class RemoteCalls {
 
   private void reply(byte[] call, int status, String text) {
     ByteSink out = replyStart(call, status);
-    out.writeText(text == null ? "" : text);
+    out.writeText(clip(text == null ? "" : text));
     sendReply(call, Frames.finish(out));
+  }
+
+  /**
+   * Cuts a reply text to what the caller reads ({@code MAX_TEXT} bytes) and a frame holds: a char
+   * takes at most 3 bytes of UTF-8.
+   */
+  private String clip(String text) {
+    int maxChars = Math.min(MAX_TEXT, maxFrame - 64) / 3;
+    return text.length() <= maxChars ? text : text.substring(0, maxChars);
   }
 
   private void sendReply(byte[] call, byte[] frame) {
