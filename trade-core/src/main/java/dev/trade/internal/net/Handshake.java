@@ -135,7 +135,8 @@ final class Handshake {
     return peer;
   }
 
-  private byte[] hello(byte[] nonce) throws IOException {
+  /** The HELLO payload with this nonce. */
+  byte[] hello(byte[] nonce) throws IOException {
     ByteArrayOutputStream bytes = new ByteArrayOutputStream(256);
     DataOutputStream out = new DataOutputStream(bytes);
     out.write(MAGIC);
