@@ -155,7 +155,8 @@ final class Handshake {
     return bytes.toByteArray();
   }
 
-  private byte[] mac(byte[] senderNonce, byte[] receiverNonce, UUID sender, UUID receiver) {
+  /** The AUTH payload that {@code sender} sends to {@code receiver}. */
+  byte[] mac(byte[] senderNonce, byte[] receiverNonce, UUID sender, UUID receiver) {
     try {
       Mac mac = Mac.getInstance("HmacSHA256");
       mac.init(new SecretKeySpec(key, "HmacSHA256"));
@@ -204,7 +205,7 @@ final class Handshake {
     return new Failure(reason, message);
   }
 
-  private static void writeFrame(DataOutputStream out, int type, byte[] payload) throws IOException {
+  static void writeFrame(DataOutputStream out, int type, byte[] payload) throws IOException {
     out.writeInt(2 + payload.length);
     out.writeByte(Wire.VERSION);
     out.writeByte(type);

@@ -274,7 +274,7 @@ final class RemoteCalls {
   }
 
   /** A reply frame's start: routing back to the caller, the request id and a status. */
-  private ByteSink replyStart(byte[] call, int status) {
+  ByteSink replyStart(byte[] call, int status) {
     ByteSink out = Frames.start(Wire.REPLY, 64);
     Frames.writeRouting(out, self, Frames.source(call), Wire.MAX_HOPS);
     out.writeBytes(call, Frames.ROUTING, 8);

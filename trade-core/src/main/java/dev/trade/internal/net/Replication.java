@@ -274,7 +274,7 @@ final class Replication {
     }
   }
 
-  private static byte[] tableRequestFrame(String owner) {
+  static byte[] tableRequestFrame(String owner) {
     ByteSink out = Frames.start(Wire.TABLE_REQUEST, 64);
     out.writeText(owner);
     return Frames.finish(out);
