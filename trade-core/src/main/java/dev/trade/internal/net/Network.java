@@ -157,7 +157,10 @@ public final class Network implements AutoCloseable {
 
   private Link nextHop(UUID container) {
     UUID hop = replication.nextHop(container);
-    return hop == null ? null : links.get(hop);
+    // No route yet to a direct neighbour whose link state is still on its way: calls are served
+    // without waiting for the control thread that applies link states, so the first CALL of a new
+    // neighbour can overtake its LINKS. The link itself is the way back.
+    return links.get(hop == null ? container : hop);
   }
 
   private void onLinked(Socket socket, Handshake.Peer peer, boolean initiatedHere) {
