@@ -273,13 +273,46 @@ class HostileInputTest {
         "peak of " + peak + " trade threads, baseline " + baseline);
     Deadline.await(Duration.ofSeconds(10), () -> tradeThreads() <= baseline + 2,
         "trade threads back near " + baseline + " (now " + tradeThreads() + ")");
-    awaitLog("refused connection from", Connector.MAX_HANDSHAKES + " handshakes in progress already");
+  }
+
+  @Test
+  void connectionsBeyondTheHandshakeLimitAreClosedAtOnce() throws Exception {
+    try (TRADEContainer slow = TRADEContainer.builder().name("slowgate")
+        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
+        .property("TIMEOUT_CLIENT_SOCKET", "20000").build()) {
+      String[] a = slow.getServerAddresses().get(0).split("@");
+      InetSocketAddress gate = new InetSocketAddress(a[0], Integer.parseInt(a[1]));
+      List<RawPeer> stalled = new ArrayList<>();
+      try {
+        for (int i = 0; i < Connector.MAX_HANDSHAKES; i++) {
+          RawPeer p = RawPeer.connect(gate);
+          stalled.add(p);
+          p.send(new byte[] {0, 0, 0, 100}); // a HELLO is coming... slowly
+        }
+        Deadline.await(Duration.ofSeconds(10),
+            () -> threadsNamed("trade-handshake-slowgate-") == Connector.MAX_HANDSHAKES,
+            Connector.MAX_HANDSHAKES + " handshakes in progress");
+        try (RawPeer extra = RawPeer.connect(gate)) {
+          extra.awaitClosed(Duration.ofSeconds(5)); // not the 20 s of a handshake
+        }
+        awaitLog("refused connection from", Connector.MAX_HANDSHAKES + " handshakes in progress already");
+        assertEquals(Connector.MAX_HANDSHAKES, threadsNamed("trade-handshake-slowgate-"));
+      } finally {
+        for (RawPeer p : stalled) {
+          p.close();
+        }
+      }
+    }
   }
 
   private static int tradeThreads() {
+    return threadsNamed("trade-");
+  }
+
+  private static int threadsNamed(String prefix) {
     int n = 0;
     for (Thread t : Thread.getAllStackTraces().keySet()) {
-      if (t.isAlive() && t.getName().startsWith("trade-")) {
+      if (t.isAlive() && t.getName().startsWith(prefix)) {
         n++;
       }
     }
