@@ -208,7 +208,10 @@ public final class Settings {
     return bool(Key.SCANFORSERVER);
   }
 
-  /** TIMEOUT_CLIENT_SOCKET: the connect timeout for a connection to another container. */
+  /**
+   * TIMEOUT_CLIENT_SOCKET: the connect timeout for a connection to another container, and the
+   * longest its handshake may take.
+   */
   public Duration clientSocketTimeout() {
     return duration(Key.TIMEOUT_CLIENT_SOCKET);
   }

@@ -8,14 +8,22 @@ import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.net.SocketException;
+import java.net.SocketTimeoutException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ExecutorService;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ScheduledFuture;
+import java.util.concurrent.SynchronousQueue;
+import java.util.concurrent.ThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
 
 /**
  * Makes authenticated links: accepts connections on the listen addresses and connects to peers,
@@ -28,6 +36,12 @@ final class Connector {
   private static final Logger LOG = System.getLogger("dev.trade.net");
   private static final long MIN_BACKOFF_MS = 50;
   private static final long MAX_BACKOFF_MS = 2_000;
+  /**
+   * The most inbound handshakes in progress at once. Each holds a thread until the peer finishes or
+   * TIMEOUT_CLIENT_SOCKET passes, and before authentication anyone may connect: without a bound, a
+   * flood of connections that never send their HELLO would grow threads without limit.
+   */
+  static final int MAX_HANDSHAKES = 64;
 
   /** Receives every link whose handshake succeeded. */
   interface Sink {
@@ -40,19 +54,33 @@ final class Connector {
   private final Handshake handshake;
   private final int connectTimeoutMs;
   private final ExecutorService workers;
+  private final ThreadPoolExecutor handshakes;
   private final ScheduledExecutorService timer;
   private final Sink sink;
   private final List<ServerSocket> servers = new CopyOnWriteArrayList<>();
   private final Map<InetSocketAddress, Long> backoff = new ConcurrentHashMap<>();
+  /** Per kept address, the number of its one live retry chain; older chains end at their next step. */
+  private final Map<InetSocketAddress, AtomicLong> chains = new ConcurrentHashMap<>();
   private volatile boolean closed;
 
-  Connector(Handshake handshake, int connectTimeoutMs, ExecutorService workers,
+  /**
+   * @param name the container's name, for thread names
+   * @param workers runs outbound connects
+   */
+  Connector(String name, Handshake handshake, int connectTimeoutMs, ExecutorService workers,
       ScheduledExecutorService timer, Sink sink) {
     this.handshake = handshake;
     this.connectTimeoutMs = connectTimeoutMs;
     this.workers = workers;
     this.timer = timer;
     this.sink = sink;
+    AtomicInteger n = new AtomicInteger();
+    this.handshakes = new ThreadPoolExecutor(0, MAX_HANDSHAKES, 1, TimeUnit.SECONDS,
+        new SynchronousQueue<>(), r -> {
+          Thread t = new Thread(r, "trade-handshake-" + name + "-" + n.incrementAndGet());
+          t.setDaemon(true);
+          return t;
+        });
   }
 
   /** Binds a listening socket (port 0: any free port) and starts accepting; returns its address. */
@@ -80,8 +108,8 @@ final class Connector {
 
   /** Keeps a link to {@code address}: connects now, retries with backoff, reconnects after loss. */
   void keepConnected(InetSocketAddress address) {
-    backoff.put(address, MIN_BACKOFF_MS);
-    timer.execute(() -> attempt(address));
+    chains.putIfAbsent(address, new AtomicLong());
+    restart(address);
   }
 
   /** Connects once to an address heard from discovery (no retries: it announces again). */
@@ -97,39 +125,48 @@ final class Connector {
 
   /** Retries every kept address now (a link was lost). */
   void retryNow() {
-    for (InetSocketAddress a : backoff.keySet()) {
-      backoff.put(a, MIN_BACKOFF_MS);
-      timer.execute(() -> attempt(a));
+    for (InetSocketAddress a : chains.keySet()) {
+      restart(a);
     }
   }
 
-  private void attempt(InetSocketAddress address) {
-    if (closed) {
+  /**
+   * Starts a new retry chain for {@code address} at once, ending the current one: each chain
+   * reschedules itself forever, so without this every lost link would add one more.
+   */
+  private void restart(InetSocketAddress address) {
+    long chain = chains.get(address).incrementAndGet();
+    backoff.put(address, MIN_BACKOFF_MS);
+    timer.execute(() -> attempt(address, chain));
+  }
+
+  private void attempt(InetSocketAddress address, long chain) {
+    if (closed || chains.get(address).get() != chain) {
       return;
     }
     long delay = backoff.getOrDefault(address, MIN_BACKOFF_MS);
     if (sink.isLinked(address)) {
       // Linked already (maybe the peer connected to us): look again later, cheaply.
-      timer.schedule(() -> attempt(address), MAX_BACKOFF_MS, TimeUnit.MILLISECONDS);
+      schedule(address, chain, MAX_BACKOFF_MS);
       return;
     }
     workers.execute(() -> {
       try {
         connect(address);
         backoff.put(address, MIN_BACKOFF_MS);
-        schedule(address, MAX_BACKOFF_MS);
-      } catch (IOException | Handshake.Failure e) {
+        schedule(address, chain, MAX_BACKOFF_MS);
+      } catch (IOException | Handshake.Failure | RuntimeException e) {
         LOG.log(delay >= MAX_BACKOFF_MS ? Level.INFO : Level.DEBUG,
             "cannot connect to {0}: {1}; retrying in {2} ms", address, e.getMessage(), delay);
         backoff.put(address, Math.min(MAX_BACKOFF_MS, delay * 2));
-        schedule(address, delay);
+        schedule(address, chain, delay);
       }
     });
   }
 
-  private void schedule(InetSocketAddress address, long delayMs) {
+  private void schedule(InetSocketAddress address, long chain, long delayMs) {
     if (!closed) {
-      timer.schedule(() -> attempt(address), delayMs, TimeUnit.MILLISECONDS);
+      timer.schedule(() -> attempt(address, chain), delayMs, TimeUnit.MILLISECONDS);
     }
   }
 
@@ -155,19 +192,26 @@ final class Connector {
         LOG.log(Level.WARNING, "accept failed on {0}: {1}", server.getLocalSocketAddress(), e);
         continue;
       }
-      workers.execute(() -> {
-        try {
-          handshakeAndHandOver(socket, false);
-        } catch (IOException | Handshake.Failure | RuntimeException e) {
-          LOG.log(Level.WARNING, "refused connection from {0}: {1}",
-              socket.getRemoteSocketAddress(), e.getMessage());
+      try {
+        handshakes.execute(() -> {
           try {
-            socket.close();
-          } catch (IOException ignored) {
-            // Already failing; nothing more to tell.
+            handshakeAndHandOver(socket, false);
+          } catch (IOException | Handshake.Failure | RuntimeException e) {
+            refused(socket, e.getMessage());
           }
-        }
-      });
+        });
+      } catch (RejectedExecutionException e) {
+        refused(socket, closed ? "closing" : MAX_HANDSHAKES + " handshakes in progress already");
+      }
+    }
+  }
+
+  private static void refused(Socket socket, String reason) {
+    LOG.log(Level.WARNING, "refused connection from {0}: {1}", socket.getRemoteSocketAddress(), reason);
+    try {
+      socket.close();
+    } catch (IOException ignored) {
+      // Already failing; nothing more to tell.
     }
   }
 
@@ -176,6 +220,18 @@ final class Connector {
     socket.setTcpNoDelay(true);
     socket.setKeepAlive(true);
     socket.setSoTimeout(connectTimeoutMs);
+    // SO_TIMEOUT bounds each read, not the handshake: a peer that sends a byte now and then would
+    // hold this thread for hours. Closing the socket at the deadline bounds all of it.
+    AtomicBoolean settled = new AtomicBoolean(); // by the deadline or by the end of the handshake
+    ScheduledFuture<?> deadline = timer.schedule(() -> {
+      if (settled.compareAndSet(false, true)) {
+        try {
+          socket.close();
+        } catch (IOException ignored) {
+          // The reading thread fails either way.
+        }
+      }
+    }, connectTimeoutMs, TimeUnit.MILLISECONDS);
     Handshake.Peer peer;
     try {
       peer = handshake.run(socket.getInputStream(), socket.getOutputStream());
@@ -183,9 +239,21 @@ final class Connector {
       LOG.log(Level.WARNING, "handshake with {0} failed: {1}", socket.getRemoteSocketAddress(),
           e.getMessage());
       throw e;
+    } catch (IOException e) {
+      throw e instanceof SocketTimeoutException || !settled.compareAndSet(false, true) ? tooSlow() : e;
+    } finally {
+      deadline.cancel(false);
+    }
+    if (!settled.compareAndSet(false, true)) {
+      throw tooSlow(); // the deadline closed the socket just now
     }
     socket.setSoTimeout(0); // from now on heartbeats tell a silent peer
     sink.linked(socket, peer, initiatedHere);
+  }
+
+  private IOException tooSlow() {
+    return new IOException("handshake not finished within TIMEOUT_CLIENT_SOCKET=" + connectTimeoutMs
+        + " ms");
   }
 
   static boolean isWildcard(InetAddress a) {
@@ -194,6 +262,7 @@ final class Connector {
 
   void close() {
     closed = true;
+    handshakes.shutdownNow();
     for (ServerSocket s : servers) {
       try {
         s.close();

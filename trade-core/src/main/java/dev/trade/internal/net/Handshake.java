@@ -35,7 +35,12 @@ final class Handshake {
 
   /** Who we are, as told to peers. */
   record Identity(String systemId, UUID containerId, String name, String host, List<String> addresses,
-      boolean encrypt) {}
+      boolean encrypt) {
+    /** An identity that does not encrypt frames. */
+    Identity(String systemId, UUID containerId, String name, String host, List<String> addresses) {
+      this(systemId, containerId, name, host, addresses, false);
+    }
+  }
 
   /** Who the peer proved to be, and the link's frame cipher when frames are encrypted (else null). */
   record Peer(UUID containerId, String name, String host, List<String> addresses, FrameCipher cipher) {}
@@ -57,9 +62,24 @@ final class Handshake {
   private final Identity self;
   private final byte[] key;
 
+  /**
+   * @throws IllegalArgumentException if the system id, name or host does not fit a handshake field
+   *     (255 bytes of UTF-8); the message names the configuration key
+   */
   Handshake(Identity self, String credentials) {
+    checkField("TRADESYSID", self.systemId());
+    checkField("CONTAINERNAME", self.name());
+    checkField("the host name", self.host());
     this.self = self;
     this.key = deriveKey(self.systemId(), credentials);
+  }
+
+  private static void checkField(String what, String value) {
+    int length = value.getBytes(StandardCharsets.UTF_8).length;
+    if (length > MAX_STRING) {
+      throw new IllegalArgumentException(what + " is " + length + " bytes long in UTF-8, but the"
+          + " connection handshake carries at most " + MAX_STRING + ": " + value);
+    }
   }
 
   /**
@@ -135,7 +155,8 @@ final class Handshake {
         new FrameCipher(key, self.containerId(), peer.containerId(), nonce, peerNonce));
   }
 
-  private byte[] hello(byte[] nonce) throws IOException {
+  /** The HELLO payload with this nonce. */
+  byte[] hello(byte[] nonce) throws IOException {
     ByteArrayOutputStream bytes = new ByteArrayOutputStream(256);
     DataOutputStream out = new DataOutputStream(bytes);
     out.write(MAGIC);
@@ -155,7 +176,8 @@ final class Handshake {
     return bytes.toByteArray();
   }
 
-  private byte[] mac(byte[] senderNonce, byte[] receiverNonce, UUID sender, UUID receiver) {
+  /** The AUTH payload that {@code sender} sends to {@code receiver}. */
+  byte[] mac(byte[] senderNonce, byte[] receiverNonce, UUID sender, UUID receiver) {
     try {
       Mac mac = Mac.getInstance("HmacSHA256");
       mac.init(new SecretKeySpec(key, "HmacSHA256"));
@@ -204,7 +226,7 @@ final class Handshake {
     return new Failure(reason, message);
   }
 
-  private static void writeFrame(DataOutputStream out, int type, byte[] payload) throws IOException {
+  static void writeFrame(DataOutputStream out, int type, byte[] payload) throws IOException {
     out.writeInt(2 + payload.length);
     out.writeByte(Wire.VERSION);
     out.writeByte(type);
@@ -224,7 +246,11 @@ final class Handshake {
       throw new Failure(Wire.REFUSE_MALFORMED, "bad handshake frame length " + length);
     }
     byte[] frame = new byte[length];
-    in.readFully(frame);
+    try {
+      in.readFully(frame);
+    } catch (EOFException e) {
+      throw new IOException("peer closed the connection during the handshake");
+    }
     ByteBuffer b = ByteBuffer.wrap(frame);
     int version = b.get() & 0xff;
     int type = b.get() & 0xff;

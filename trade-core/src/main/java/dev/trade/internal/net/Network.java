@@ -85,10 +85,18 @@ public final class Network implements AutoCloseable {
         return provider.invoke(call);
       }
     }, workers, timer, settings.maxFrameSize());
-    this.replication = new Replication(self, registry, tableCodec, links, calls);
+    this.replication = new Replication(self, registry, tableCodec, links, calls,
+        settings.failureTimeout().plus(settings.heartbeatInterval()).toNanos(),
+        (task, delay) -> {
+          try {
+            timer.schedule(() -> onControl(task), delay, TimeUnit.NANOSECONDS);
+          } catch (RejectedExecutionException closing) {
+            // Nothing left to refresh.
+          }
+        });
     Handshake handshake = new Handshake(new Handshake.Identity(settings.tradeSysId(), self, name,
         host, List.of(), settings.useEncryption()), settings.credentials());
-    this.connector = new Connector(handshake, (int) settings.clientSocketTimeout().toMillis(),
+    this.connector = new Connector(name, handshake, (int) settings.clientSocketTimeout().toMillis(),
         workers, timer, new Connector.Sink() {
           @Override
           public void linked(Socket socket, Handshake.Peer peer, boolean initiatedHere) {
@@ -227,7 +235,10 @@ public final class Network implements AutoCloseable {
 
   private Link nextHop(UUID container) {
     UUID hop = replication.nextHop(container);
-    return hop == null ? null : links.get(hop);
+    // No route yet to a direct neighbour whose link state is still on its way: calls are served
+    // without waiting for the control thread that applies link states, so the first CALL of a new
+    // neighbour can overtake its LINKS. The link itself is the way back.
+    return links.get(hop == null ? container : hop);
   }
 
   private void onLinked(Socket socket, Handshake.Peer peer, boolean initiatedHere) {
@@ -241,7 +252,7 @@ public final class Network implements AutoCloseable {
     if (initiatedHere) {
       dialled.put((InetSocketAddress) socket.getRemoteSocketAddress(), peer.containerId());
     }
-    onControl(() -> {
+    boolean accepted = onControl(() -> {
       if (closed) {
         link.close("container closing");
         return;
@@ -250,7 +261,7 @@ public final class Network implements AutoCloseable {
       if (existing != null && !existing.isClosed()) {
         // Two links to one container (both dialled at once): keep the one dialled by the container
         // with the smaller id, as the other side decides the same.
-        UUID keptInitiator = initiator(existing).compareTo(initiator(link)) <= 0
+        UUID keptInitiator = compareIds(initiator(existing), initiator(link)) <= 0
             ? initiator(existing) : initiator(link);
         Link drop = initiator(link).equals(keptInitiator) ? existing : link;
         if (drop == link) {
@@ -265,10 +276,39 @@ public final class Network implements AutoCloseable {
       link.start(handler);
       replication.linkUp(link);
     });
+    if (!accepted) {
+      link.close("container closing");
+    }
+  }
+
+  /**
+   * Runs {@code task} on the control thread; false if the container has closed. Then there is no
+   * control thread and no state left to update: link readers that end then must not fail for it.
+   */
+  private boolean onControl(Runnable task) {
+    try {
+      control.execute(task);
+      return true;
+    } catch (RejectedExecutionException e) {
+      if (!closed) {
+        throw e;
+      }
+      return false;
+    }
   }
 
   private UUID initiator(Link l) {
     return l.initiatedHere ? self : l.peerId;
+  }
+
+  /**
+   * Orders container ids by their 16 bytes as unsigned numbers, the order of RFC 4122 and of other
+   * languages' UUID types. Not {@link UUID#compareTo}, which compares signed halves: containers
+   * written in another language would then keep a different one of two duplicate links.
+   */
+  static int compareIds(UUID a, UUID b) {
+    int c = Long.compareUnsigned(a.getMostSignificantBits(), b.getMostSignificantBits());
+    return c != 0 ? c : Long.compareUnsigned(a.getLeastSignificantBits(), b.getLeastSignificantBits());
   }
 
   private final Link.Handler handler = new Link.Handler() {
@@ -319,30 +359,23 @@ public final class Network implements AutoCloseable {
     }
   };
 
-  /**
-   * Runs a state change on the control thread. Once {@link #close()} stopped that thread, there is
-   * no state left to keep: link readers that notice their closed sockets then have nothing to do.
-   */
-  private void onControl(Runnable change) {
-    try {
-      control.execute(change);
-    } catch (RejectedExecutionException e) {
-      if (!closed) {
-        throw e;
-      }
-    }
-  }
-
   private void heartbeat() {
     long now = System.nanoTime();
     long interval = settings.heartbeatInterval().toNanos();
     long silence = settings.failureTimeout().toNanos();
     byte[] ping = Frames.finish(Frames.start(Wire.PING, 0));
     for (Link l : links.values()) {
-      if (now - l.lastReceived > silence) {
-        l.close("silent for " + TimeUnit.NANOSECONDS.toMillis(now - l.lastReceived)
-            + " ms (FAILURETIMEOUT=" + settings.failureTimeout().toMillis() + ")");
-      } else if (now - l.lastSent >= interval) {
+      long quiet = now - l.lastReceived;
+      if (quiet >= silence) {
+        closeSilent(l, quiet);
+        continue;
+      }
+      if (silence - quiet < interval) {
+        // It would pass FAILURETIMEOUT before the next beat: look again exactly then, so that a
+        // silent peer is declared gone after FAILURETIMEOUT, not up to one interval later.
+        timer.schedule(() -> checkSilence(l), silence - quiet, TimeUnit.NANOSECONDS);
+      }
+      if (now - l.lastSent >= interval) {
         // On a worker: a ping that finds a large frame being written must not hold up the
         // heartbeats (and silence checks) of every other link.
         workers.execute(() -> {
@@ -354,6 +387,18 @@ public final class Network implements AutoCloseable {
         });
       }
     }
+  }
+
+  private void checkSilence(Link l) {
+    long quiet = System.nanoTime() - l.lastReceived;
+    if (!l.isClosed() && quiet >= settings.failureTimeout().toNanos()) {
+      closeSilent(l, quiet);
+    }
+  }
+
+  private void closeSilent(Link l, long quietNanos) {
+    l.close("silent for " + TimeUnit.NANOSECONDS.toMillis(quietNanos)
+        + " ms (FAILURETIMEOUT=" + settings.failureTimeout().toMillis() + ")");
   }
 
   /** Says goodbye to every neighbour, closes all links and stops all threads. */

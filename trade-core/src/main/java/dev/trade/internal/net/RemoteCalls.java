@@ -88,16 +88,8 @@ final class RemoteCalls {
     }
     long id = nextId.incrementAndGet();
     long remaining = deadlineNanos - System.nanoTime();
-    ByteSink out = Frames.start(Wire.CALL, 64);
-    Frames.writeRouting(out, self, destination, Wire.MAX_HOPS);
-    out.writeLong(id);
-    out.writeLong(d.serviceId());
-    out.writeInt((int) Math.min(Integer.MAX_VALUE, Math.max(1, TimeUnit.NANOSECONDS.toMillis(remaining))));
-    out.writeVarUInt(args.length);
-    for (Object a : args) {
-      codec.write(a, out);
-    }
-    byte[] frame = Frames.finish(out);
+    byte[] frame = callFrame(destination, id, d.serviceId(),
+        (int) Math.min(Integer.MAX_VALUE, Math.max(1, TimeUnit.NANOSECONDS.toMillis(remaining))), args);
     if (!fits(frame)) {
       // Each value fits its limit, but not the call as a whole; the peer would drop the link.
       throw new TRADESerializationException("Cannot call " + d.signature() + ": its arguments need "
@@ -130,6 +122,21 @@ final class RemoteCalls {
       throw new TRADEException("Interrupted while waiting for " + d.signature());
     }
     return decodeReply(d, reply, loader);
+  }
+
+  /** A CALL frame (header included) for a service of {@code destination}. */
+  byte[] callFrame(UUID destination, long requestId, long serviceId, int timeoutMs, Object[] args)
+      throws TRADESerializationException {
+    ByteSink out = Frames.start(Wire.CALL, 64);
+    Frames.writeRouting(out, self, destination, Wire.MAX_HOPS);
+    out.writeLong(requestId);
+    out.writeLong(serviceId);
+    out.writeInt(timeoutMs);
+    out.writeVarUInt(args.length);
+    for (Object a : args) {
+      codec.write(a, out);
+    }
+    return Frames.finish(out);
   }
 
   private Object decodeReply(ServiceDescriptor d, byte[] payload, ClassLoader loader)
@@ -289,7 +296,7 @@ final class RemoteCalls {
   }
 
   /** A reply frame's start: routing back to the caller, the request id and a status. */
-  private ByteSink replyStart(byte[] call, int status) {
+  ByteSink replyStart(byte[] call, int status) {
     ByteSink out = Frames.start(Wire.REPLY, 64);
     Frames.writeRouting(out, self, Frames.source(call), Wire.MAX_HOPS);
     out.writeBytes(call, Frames.ROUTING, 8);
@@ -300,9 +307,17 @@ final class RemoteCalls {
   /** A reply carrying only a text, shortened to what callers read (MAX_TEXT bytes of UTF-8). */
   private void reply(Link from, byte[] call, int status, String text) {
     ByteSink out = replyStart(call, status);
-    String t = text == null ? "" : text;
-    out.writeText(t.length() > MAX_TEXT / 3 ? t.substring(0, MAX_TEXT / 3) : t);
+    out.writeText(clip(text == null ? "" : text));
     sendReply(from, call, Frames.finish(out));
+  }
+
+  /**
+   * Cuts a reply text to what the caller reads ({@code MAX_TEXT} bytes) and a frame holds: a char
+   * takes at most 3 bytes of UTF-8.
+   */
+  private String clip(String text) {
+    int maxChars = Math.min(MAX_TEXT, maxFrame - 64) / 3;
+    return text.length() <= maxChars ? text : text.substring(0, maxChars);
   }
 
   /** Whether a finished frame is within the frame size that peers accept. */

@@ -42,14 +42,28 @@ final class Replication {
   private final Topology topology;
   private volatile Map<UUID, UUID> nextHops = Map.of();
 
-  Replication(UUID self, Registry registry, Codec tableCodec, Map<UUID, Link> links, RemoteCalls calls) {
+  /** Runs a task on the control thread after a delay in nanoseconds. */
+  interface Scheduler {
+    void schedule(Runnable task, long delayNanos);
+  }
+
+  private final Scheduler scheduler;
+  private long refreshAt;
+
+  /**
+   * @param holdDownNanos how long a container that became unreachable stays so unless it proves
+   *     alive (see {@link Topology})
+   */
+  Replication(UUID self, Registry registry, Codec tableCodec, Map<UUID, Link> links, RemoteCalls calls,
+      long holdDownNanos, Scheduler scheduler) {
+    this.scheduler = scheduler;
     this.self = self;
     this.selfId = self.toString();
     this.registry = registry;
     this.tableCodec = tableCodec;
     this.links = links;
     this.calls = calls;
-    this.topology = new Topology(selfId);
+    this.topology = new Topology(selfId, holdDownNanos);
   }
 
   /** The neighbour on the shortest path to {@code container}, or null. Any thread. */
@@ -127,6 +141,9 @@ final class Replication {
           String owner = in.readText(MAX_TEXT);
           long version = in.readLong();
           List<ServiceDescriptor> services = descriptors(tableCodec.read(in, loader()));
+          if (topology.isHeldDown(owner)) {
+            break; // a stale copy of a container that just went away
+          }
           if (registry.applyTable(new Registry.Table(owner, version, services), distance(owner))) {
             flood(payloadFrame(Wire.TABLE, payload), from);
           }
@@ -137,6 +154,9 @@ final class Replication {
           long version = in.readLong();
           List<ServiceDescriptor> add = descriptors(tableCodec.read(in, loader()));
           List<Long> remove = ids(tableCodec.read(in, loader()));
+          if (topology.isHeldDown(owner)) {
+            break;
+          }
           Registry.DeltaResult r = registry.applyDelta(owner, version, add, remove, distance(owner));
           if (r == Registry.DeltaResult.APPLIED) {
             flood(payloadFrame(Wire.DELTA, payload), from);
@@ -189,6 +209,15 @@ final class Replication {
       if (!hops.containsKey(gone)) {
         calls.failTo(gone, "container " + gone + " left or is not reachable any more");
       }
+    }
+    long end = topology.nextHoldDownEnd();
+    if (end != 0 && (refreshAt == 0 || end - refreshAt < 0)) {
+      refreshAt = end;
+      scheduler.schedule(() -> {
+        refreshAt = 0;
+        topology.refresh();
+        afterTopologyChange();
+      }, Math.max(0, end - System.nanoTime()));
     }
     // A container that became reachable but whose table we lack (it travelled another way, or was
     // pruned while the path was down): ask the next hop for it.
@@ -276,7 +305,7 @@ final class Replication {
     }
   }
 
-  private static byte[] tableRequestFrame(String owner) {
+  static byte[] tableRequestFrame(String owner) {
     ByteSink out = Frames.start(Wire.TABLE_REQUEST, 64);
     out.writeText(owner);
     return Frames.finish(out);

@@ -34,11 +34,20 @@ final class Topology {
   private final String self;
   private final Map<String, LinkState> states = new HashMap<>();
   private final Map<String, Long> unreachableSince = new HashMap<>();
+  /** Containers that just became unreachable: their state version then, and until when it holds. */
+  private final Map<String, long[]> holdDown = new HashMap<>();
+  private final long holdDownNanos;
   private long ownVersion;
   private Map<String, Route> routes = Map.of();
 
-  Topology(String self) {
+  /**
+   * @param holdDownNanos how long a container that became unreachable stays so unless it shows it
+   *     is alive (a newer link state of its own): neighbours notice a death at different moments,
+   *     and a late neighbour's stale state must not bring a dead container back
+   */
+  Topology(String self, long holdDownNanos) {
     this.self = self;
+    this.holdDownNanos = holdDownNanos;
     states.put(self, new LinkState(self, 0, Set.of()));
   }
 
@@ -105,7 +114,25 @@ final class Topology {
     });
   }
 
+  /** Whether {@code container} is held unreachable now (see the constructor). */
+  boolean isHeldDown(String container) {
+    long[] h = holdDown.get(container);
+    if (h == null) {
+      return false;
+    }
+    LinkState s = states.get(container);
+    return System.nanoTime() - h[1] < 0 && (s == null || s.version() <= h[0]);
+  }
+
+  /** Recomputes routes now (a hold-down may have ended). */
+  void refresh() {
+    recompute();
+  }
+
   private void recompute() {
+    long now = System.nanoTime();
+    holdDown.values().removeIf(h -> now - h[1] >= 0);
+    Map<String, Route> before = routes;
     Map<String, Route> result = new HashMap<>();
     Queue<String> queue = new ArrayDeque<>();
     for (String n : neighboursOf(self)) {
@@ -116,13 +143,31 @@ final class Topology {
       String at = queue.poll();
       Route via = result.get(at);
       for (String n : neighboursOf(at)) {
-        if (!n.equals(self) && !result.containsKey(n)) {
+        if (!n.equals(self) && !result.containsKey(n) && !isHeldDown(n)) {
           result.put(n, new Route(via.nextHop(), via.distance() + 1));
           queue.add(n);
         }
       }
     }
     routes = Collections.unmodifiableMap(result);
+    holdDown.keySet().removeAll(result.keySet()); // a direct link proves it alive
+    for (String gone : before.keySet()) {
+      if (!result.containsKey(gone)) {
+        LinkState s = states.get(gone);
+        holdDown.put(gone, new long[] {s == null ? Long.MAX_VALUE : s.version(), now + holdDownNanos});
+      }
+    }
+  }
+
+  /** When the earliest hold-down ends (nanoTime), or 0 when none is in force. */
+  long nextHoldDownEnd() {
+    long next = 0;
+    for (long[] h : holdDown.values()) {
+      if (next == 0 || h[1] - next < 0) {
+        next = h[1];
+      }
+    }
+    return next;
   }
 
   /** Neighbours of {@code node} that list {@code node} back, sorted for determinism. */

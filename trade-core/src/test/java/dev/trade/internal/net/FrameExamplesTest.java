@@ -1,0 +1,173 @@
+package dev.trade.internal.net;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trade.TRADEService;
+import dev.trade.internal.call.Arguments;
+import dev.trade.internal.codec.AllowList;
+import dev.trade.internal.codec.ByteSink;
+import dev.trade.internal.codec.Codec;
+import dev.trade.internal.codec.InfoBinding;
+import dev.trade.internal.codec.Limits;
+import dev.trade.internal.registry.LocalService;
+import dev.trade.internal.registry.Registry;
+import dev.trade.internal.registry.ServiceDescriptor;
+import java.io.ByteArrayOutputStream;
+import java.io.DataOutputStream;
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.security.MessageDigest;
+import java.util.Arrays;
+import java.util.HexFormat;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.UUID;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import javax.crypto.Mac;
+import javax.crypto.spec.SecretKeySpec;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Keeps the worked examples of {@code docs/protocol.md} true: each hex block marked
+ * {@code <!-- example: name -->} must be exactly what the real classes produce for the inputs the
+ * document states. Text after {@code #} on a line of a block is commentary. The path is relative
+ * to the trade-core module directory, where Surefire runs.
+ */
+class FrameExamplesTest {
+  private static final Path DOC = Path.of("..", "docs", "protocol.md");
+  private static final Pattern EXAMPLE =
+      Pattern.compile("<!-- example: ([a-z-]+) -->\\s*```text\\n(.*?)```", Pattern.DOTALL);
+
+  // The inputs the document states.
+  static final UUID ARM = UUID.fromString("00112233-4455-6677-8899-aabbccddeeff");
+  static final UUID HUB = UUID.fromString("ffeeddcc-bbaa-9988-7766-554433221100");
+  static final byte[] ARM_NONCE = sequence(0x00);
+  static final byte[] HUB_NONCE = sequence(0x20);
+
+  public static class RobotArm {
+    @TRADEService
+    public boolean openGripper(int speed) {
+      return speed > 0;
+    }
+  }
+
+  private static byte[] sequence(int first) {
+    byte[] b = new byte[32];
+    for (int i = 0; i < b.length; i++) {
+      b[i] = (byte) (first + i);
+    }
+    return b;
+  }
+
+  private static Handshake armHandshake() {
+    return new Handshake(new Handshake.Identity("diarc", ARM, "arm", "robot1", List.of()), "diarcUser");
+  }
+
+  private static byte[] handshakeFrame(int type, byte[] payload) throws IOException {
+    ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+    Handshake.writeFrame(new DataOutputStream(bytes), type, payload);
+    return bytes.toByteArray();
+  }
+
+  private static Codec codec() {
+    return new Codec(AllowList.withDefaults(), Limits.DEFAULT, InfoBinding.NONE);
+  }
+
+  /** The arm provides openGripper(int); the hub calls it with 3. */
+  private static byte[] callFrame() throws Exception {
+    Registry registry = new Registry(ARM.toString(), "arm", "robot1");
+    List<LocalService> services = registry.register(new RobotArm(), List.of());
+    ServiceDescriptor d = services.get(0).descriptor();
+    assertEquals("openGripper(int)", d.signature());
+    RemoteCalls hub = new RemoteCalls(HUB, codec(), null, null, null, null, 1 << 26);
+    return hub.callFrame(ARM, 1, d.serviceId(), 30_000, Arguments.normalize(d, new Object[] {3}));
+  }
+
+  /** The arm's successful reply to that call: {@code true}. */
+  private static byte[] replyFrame() throws Exception {
+    byte[] call = callFrame();
+    byte[] payload = Arrays.copyOfRange(call, Wire.HEADER, call.length);
+    RemoteCalls arm = new RemoteCalls(ARM, codec(), null, null, null, null, 1 << 26);
+    ByteSink out = arm.replyStart(payload, Wire.OK);
+    codec().write(Boolean.TRUE, out);
+    return Frames.finish(out);
+  }
+
+  private static Map<String, byte[]> documented() throws IOException {
+    String doc = Files.readString(DOC, StandardCharsets.UTF_8);
+    Map<String, byte[]> examples = new LinkedHashMap<>();
+    Matcher m = EXAMPLE.matcher(doc);
+    while (m.find()) {
+      StringBuilder hex = new StringBuilder();
+      for (String line : m.group(2).split("\n")) {
+        int comment = line.indexOf('#');
+        hex.append((comment < 0 ? line : line.substring(0, comment)).replaceAll("\\s", ""));
+      }
+      examples.put(m.group(1), HexFormat.of().parseHex(hex));
+    }
+    return examples;
+  }
+
+  private static void assertDocumented(String name, byte[] actual) throws IOException {
+    byte[] documented = documented().get(name);
+    String hex = HexFormat.ofDelimiter(" ").formatHex(actual);
+    assertTrue(documented != null, "no example '" + name + "' in " + DOC + "; it is\n" + hex);
+    assertEquals(hex, HexFormat.ofDelimiter(" ").formatHex(documented), "example '" + name + "'");
+  }
+
+  @Test
+  void helloExample() throws Exception {
+    assertDocumented("hello", handshakeFrame(Wire.HELLO, armHandshake().hello(ARM_NONCE)));
+  }
+
+  @Test
+  void authExample() throws Exception {
+    assertDocumented("auth-key", Handshake.deriveKey("diarc", "diarcUser"));
+    byte[] proof = armHandshake().mac(ARM_NONCE, HUB_NONCE, ARM, HUB);
+    assertDocumented("auth", handshakeFrame(Wire.AUTH, proof));
+  }
+
+  /** The recipe the document gives, computed independently of {@link Handshake}. */
+  @Test
+  void authRecipeOfTheDocumentIsWhatTheCodeComputes() throws Exception {
+    MessageDigest sha = MessageDigest.getInstance("SHA-256");
+    byte[] key = sha.digest("TRADE-credentials-v1\0diarc\0diarcUser".getBytes(StandardCharsets.UTF_8));
+    Mac mac = Mac.getInstance("HmacSHA256");
+    mac.init(new SecretKeySpec(key, "HmacSHA256"));
+    mac.update("TRADE-auth-v1".getBytes(StandardCharsets.US_ASCII));
+    mac.update("diarc".getBytes(StandardCharsets.UTF_8));
+    mac.update(ByteBuffer.allocate(32).putLong(ARM.getMostSignificantBits())
+        .putLong(ARM.getLeastSignificantBits()).putLong(HUB.getMostSignificantBits())
+        .putLong(HUB.getLeastSignificantBits()).array());
+    mac.update(ARM_NONCE);
+    mac.update(HUB_NONCE);
+    assertArrayEquals(mac.doFinal(), armHandshake().mac(ARM_NONCE, HUB_NONCE, ARM, HUB));
+  }
+
+  @Test
+  void callExample() throws Exception {
+    assertDocumented("call", callFrame());
+  }
+
+  @Test
+  void replyExample() throws Exception {
+    assertDocumented("reply", replyFrame());
+  }
+
+  @Test
+  void tableRequestExample() throws Exception {
+    assertDocumented("table-request", Replication.tableRequestFrame(ARM.toString()));
+  }
+
+  @Test
+  void pingExample() throws Exception {
+    assertDocumented("ping", Frames.finish(Frames.start(Wire.PING, 0)));
+  }
+}

@@ -1,0 +1,141 @@
+package dev.trade.internal.net;
+
+import java.io.DataInputStream;
+import java.io.EOFException;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.net.SocketException;
+import java.net.SocketTimeoutException;
+import java.nio.ByteBuffer;
+import java.time.Duration;
+import java.util.List;
+import java.util.UUID;
+
+/**
+ * A peer driven by hand over a loopback socket: it sends whatever bytes a test gives it, and can
+ * run the real {@link Handshake} first to get past authentication.
+ */
+final class RawPeer implements AutoCloseable {
+  final Socket socket;
+  final UUID id = UUID.randomUUID();
+  private final InputStream in;
+  private final OutputStream out;
+
+  private RawPeer(Socket socket) throws IOException {
+    this.socket = socket;
+    this.in = socket.getInputStream();
+    this.out = socket.getOutputStream();
+  }
+
+  static RawPeer connect(InetSocketAddress address) throws IOException {
+    Socket s = new Socket();
+    s.connect(address, 5_000);
+    s.setTcpNoDelay(true);
+    return new RawPeer(s);
+  }
+
+  /** Authenticates as container {@link #id} named {@code name}; returns who answered. */
+  Handshake.Peer handshake(String systemId, String credentials, String name)
+      throws IOException, Handshake.Failure {
+    socket.setSoTimeout(5_000);
+    Handshake h = new Handshake(
+        new Handshake.Identity(systemId, id, name, "localhost", List.of()), credentials);
+    Handshake.Peer peer = h.run(in, out);
+    socket.setSoTimeout(0);
+    return peer;
+  }
+
+  /** Authenticates with the default TRADESYSID and CREDENTIALS. */
+  Handshake.Peer handshake(String name) throws IOException, Handshake.Failure {
+    return handshake("diarc", "diarcUser", name);
+  }
+
+  /** Sends bytes; a connection the other side has closed already is not an error here. */
+  void send(byte[] bytes) {
+    try {
+      out.write(bytes);
+      out.flush();
+    } catch (IOException e) {
+      // Closed by the other side: what the caller checks next.
+    }
+  }
+
+  /**
+   * Whether the other side has closed the connection, judged without waiting: reads and discards
+   * what has arrived.
+   */
+  boolean isClosedNow() throws IOException {
+    byte[] sink = new byte[8192];
+    while (in.available() > 0) {
+      if (in.read(sink) < 0) {
+        return true;
+      }
+    }
+    socket.setSoTimeout(1);
+    try {
+      return in.read(sink) < 0;
+    } catch (SocketTimeoutException e) {
+      return false;
+    } catch (SocketException e) {
+      return true;
+    }
+  }
+
+  /** Reads one frame: {@code [type, payload...]}. */
+  byte[] readFrame() throws IOException {
+    socket.setSoTimeout(5_000);
+    DataInputStream data = new DataInputStream(in);
+    int length = data.readInt();
+    data.readUnsignedByte(); // version
+    byte[] typeAndPayload = new byte[length - 1];
+    data.readFully(typeAndPayload);
+    return typeAndPayload;
+  }
+
+  /**
+   * Reads and discards until the other side closes the connection, and returns how long that took.
+   *
+   * @throws AssertionError if it is still open after {@code timeout}
+   */
+  Duration awaitClosed(Duration timeout) throws IOException {
+    long start = System.nanoTime();
+    long deadline = start + timeout.toNanos();
+    byte[] sink = new byte[8192];
+    while (true) {
+      long left = deadline - System.nanoTime();
+      if (left <= 0) {
+        throw new AssertionError("connection still open after " + timeout.toMillis() + " ms");
+      }
+      socket.setSoTimeout((int) Math.max(1, left / 1_000_000));
+      try {
+        if (in.read(sink) < 0) {
+          break;
+        }
+      } catch (SocketTimeoutException e) {
+        // Loop: the deadline check fails the test.
+      } catch (SocketException | EOFException e) { // reset: closed with our bytes unread
+        break;
+      }
+    }
+    return Duration.ofNanos(System.nanoTime() - start);
+  }
+
+  @Override
+  public void close() throws IOException {
+    socket.close();
+  }
+
+  /** A frame as the protocol lays it out, with any length, version and type. */
+  static byte[] frame(int length, int version, int type, byte[] payload) {
+    return ByteBuffer.allocate(6 + payload.length).putInt(length).put((byte) version)
+        .put((byte) type).put(payload).array();
+  }
+
+  /** A well-formed frame of {@code type}. */
+  static byte[] frame(int type, byte[] payload) {
+    return frame(2 + payload.length, Wire.VERSION, type, payload);
+  }
+}

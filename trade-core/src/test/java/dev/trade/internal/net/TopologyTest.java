@@ -1,0 +1,66 @@
+package dev.trade.internal.net;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.Set;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+
+class TopologyTest {
+  private static final long LONG = TimeUnit.SECONDS.toNanos(60);
+
+  @Test
+  void shortestPathsUseOnlyEdgesBothEndsList() {
+    Topology t = new Topology("me", LONG);
+    t.setOwnNeighbours(Set.of("a"));
+    t.apply(new Topology.LinkState("a", 1, Set.of("me", "b")));
+    assertNull(t.route("b"), "b does not list a back yet");
+    t.apply(new Topology.LinkState("b", 1, Set.of("a")));
+    assertEquals(new Topology.Route("a", 2), t.route("b"));
+    assertEquals(new Topology.Route("a", 1), t.route("a"));
+  }
+
+  @Test
+  void aStateThatArrivesBeforeItsConnectingStatesIsKept() {
+    Topology t = new Topology("me", LONG);
+    t.setOwnNeighbours(Set.of("a"));
+    t.apply(new Topology.LinkState("b", 1, Set.of("a"))); // b's state first: b not reachable yet
+    t.pruneUnreachable(System.nanoTime(), LONG);
+    t.apply(new Topology.LinkState("a", 1, Set.of("me", "b")));
+    assertEquals(2, t.route("b").distance());
+  }
+
+  @Test
+  void aContainerThatWentAwayIsNotBroughtBackByAStaleStateButIsByItsOwnNewerOne() {
+    Topology t = new Topology("me", LONG);
+    t.setOwnNeighbours(Set.of("a", "x"));
+    t.apply(new Topology.LinkState("a", 1, Set.of("me")));
+    t.apply(new Topology.LinkState("x", 1, Set.of("me", "a")));
+    assertNotNull(t.route("x"));
+    t.setOwnNeighbours(Set.of("a")); // our link to x died
+    assertNull(t.route("x"));
+    // a's state from before a noticed x's death arrives late, listing x: x stays away.
+    t.apply(new Topology.LinkState("a", 2, Set.of("me", "x")));
+    assertNull(t.route("x"));
+    assertTrue(t.isHeldDown("x"));
+    // x itself says something new: it is alive after all.
+    t.apply(new Topology.LinkState("x", 2, Set.of("a")));
+    assertEquals(new Topology.Route("a", 2), t.route("x"));
+    assertFalse(t.isHeldDown("x"));
+  }
+
+  @Test
+  void aRemainingPathServesAtOnce() {
+    Topology t = new Topology("me", 0);
+    t.setOwnNeighbours(Set.of("a", "x"));
+    t.apply(new Topology.LinkState("a", 1, Set.of("me", "x")));
+    t.apply(new Topology.LinkState("x", 1, Set.of("me", "a")));
+    t.setOwnNeighbours(Set.of("a"));
+    t.refresh();
+    assertEquals(new Topology.Route("a", 2), t.route("x"), "reachable through a once held no more");
+  }
+}
