@@ -1,5 +1,6 @@
 package dev.trade.internal.codec;
 
+import dev.trade.internal.registry.Types;
 import java.io.ObjectInputFilter;
 import java.util.ArrayList;
 import java.util.List;
@@ -191,7 +192,7 @@ public final class AllowList {
    * sensible).
    */
   static String elementName(String className) {
-    if (Primitives.named(className) != null) {
+    if (Types.primitive(className) != null) {
       return null;
     }
     if (!className.startsWith("[")) {

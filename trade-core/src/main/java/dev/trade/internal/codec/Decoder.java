@@ -1,5 +1,6 @@
 package dev.trade.internal.codec;
 
+import dev.trade.internal.registry.Types;
 import static dev.trade.internal.codec.ByteSink.INTS;
 import static dev.trade.internal.codec.ByteSink.LONGS;
 import static dev.trade.internal.codec.ByteSink.SHORTS;
@@ -156,7 +157,7 @@ final class Decoder {
     if (known != null && allowList.isAllowed(name)) {
       return known;
     }
-    Class<?> primitive = Primitives.named(name);
+    Class<?> primitive = Types.primitive(name);
     if (primitive != null) {
       return primitive;
     }

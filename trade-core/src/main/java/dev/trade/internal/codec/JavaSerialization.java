@@ -1,5 +1,6 @@
 package dev.trade.internal.codec;
 
+import dev.trade.internal.registry.Types;
 import dev.trade.TRADESerializationException;
 import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
@@ -116,7 +117,7 @@ final class JavaSerialization {
     @Override
     protected Class<?> resolveClass(ObjectStreamClass desc) throws IOException, ClassNotFoundException {
       String name = desc.getName();
-      Class<?> primitive = Primitives.named(name);
+      Class<?> primitive = Types.primitive(name);
       if (primitive != null) {
         return primitive;
       }

@@ -1,5 +1,6 @@
 package dev.trade.internal.codec;
 
+import dev.trade.internal.registry.Types;
 import dev.trade.TRADESerializationException;
 import java.lang.reflect.Constructor;
 import java.lang.reflect.Modifier;
@@ -28,7 +29,7 @@ final class Structs {
     for (int i = 0; i < values.length; i++) {
       values[i] = present[i]
           ? fit(values[i], m.types[i], d.allowList, "component ", m.names[i], typeName)
-          : Primitives.defaultValue(m.types[i]);
+          : Types.defaultValue(m.types[i]);
     }
     try {
       return (Object) m.creator.invokeExact(values);
@@ -100,7 +101,7 @@ final class Structs {
   static Object fit(Object value, Class<?> type, AllowList allowList, String what, String member,
       String owner) throws TRADESerializationException {
     if (type.isPrimitive()
-        ? value != null && value.getClass() == Primitives.wrap(type)
+        ? value != null && value.getClass() == Types.box(type)
         : value == null || type.isInstance(value)) {
       return value;
     }

@@ -18,29 +18,42 @@ public final class Types {
 
   private Types() {}
 
+  private static final Map<Class<?>, Class<?>> WRAPPERS =
+      Map.of(
+          boolean.class, Boolean.class,
+          byte.class, Byte.class,
+          short.class, Short.class,
+          char.class, Character.class,
+          int.class, Integer.class,
+          long.class, Long.class,
+          float.class, Float.class,
+          double.class, Double.class,
+          void.class, Void.class);
+
+  private static final Map<Class<?>, Object> DEFAULTS =
+      Map.of(
+          boolean.class, false,
+          byte.class, (byte) 0,
+          short.class, (short) 0,
+          char.class, (char) 0,
+          int.class, 0,
+          long.class, 0L,
+          float.class, 0f,
+          double.class, 0d);
+
   /** The boxed class for a primitive (void → Void), the class itself otherwise. */
   public static Class<?> box(Class<?> c) {
-    if (!c.isPrimitive()) {
-      return c;
-    }
-    if (c == int.class) {
-      return Integer.class;
-    } else if (c == boolean.class) {
-      return Boolean.class;
-    } else if (c == long.class) {
-      return Long.class;
-    } else if (c == double.class) {
-      return Double.class;
-    } else if (c == float.class) {
-      return Float.class;
-    } else if (c == short.class) {
-      return Short.class;
-    } else if (c == byte.class) {
-      return Byte.class;
-    } else if (c == char.class) {
-      return Character.class;
-    }
-    return Void.class;
+    return c.isPrimitive() ? WRAPPERS.get(c) : c;
+  }
+
+  /** The primitive type (or {@code void}) with this name, or null. */
+  public static Class<?> primitive(String name) {
+    return PRIMITIVES.get(name);
+  }
+
+  /** The zero value of a primitive type, or null for reference types. */
+  public static Object defaultValue(Class<?> type) {
+    return DEFAULTS.get(type);
   }
 
   /**
