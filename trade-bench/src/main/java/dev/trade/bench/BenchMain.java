@@ -15,9 +15,9 @@ import java.util.List;
 public final class BenchMain {
   private BenchMain() {}
 
-  public static void main(String[] args) throws Exception {
+  public static void main(String[] args) throws Throwable {
     if (args.length < 2) {
-      System.err.println("usage: BenchMain remote|lifecycle|scale|machine <results-dir> [systems...]");
+      System.err.println("usage: BenchMain remote|lifecycle|scale|localcpu|machine <results-dir> [systems...]");
       System.exit(2);
     }
     Path out = Path.of(args[1]);
@@ -36,6 +36,7 @@ public final class BenchMain {
       case "lifecycle" -> new Lifecycle(logs, quick).run(json);
       case "scale" -> new Scale(logs, quick).run(json);
       case "machine" -> machine(json);
+      case "localcpu" -> LocalCpu.run(json);
       default -> throw new IllegalArgumentException("unknown part " + args[0]);
     }
     json.field("load_average_after", loadAverage());

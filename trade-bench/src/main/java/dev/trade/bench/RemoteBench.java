@@ -44,7 +44,13 @@ final class RemoteBench {
     Map<String, Rpc> clients = new LinkedHashMap<>();
     try {
       for (String s : systems) {
-        Jvm jvm = Jvm.start(List.of("-Xms256m", "-Xmx512m"), ServerMain.class,
+        List<String> options = new ArrayList<>(List.of("-Xms256m", "-Xmx512m"));
+        // For profiling: -Dbench.serverOptions="-XX:StartFlightRecording=filename=/tmp/%s.jfr"
+        String extra = System.getProperty("bench.serverOptions", "").replace("%s", s);
+        if (!extra.isBlank()) {
+          options.addAll(List.of(extra.trim().split("\\s+")));
+        }
+        Jvm jvm = Jvm.start(options, ServerMain.class,
             logs.resolve("server-" + s + ".log"), s);
         servers.put(s, jvm);
       }
