@@ -1,5 +1,6 @@
 package dev.trade.bench;
 
+import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -26,8 +27,9 @@ final class Scale {
 
   void run(Json json) throws Exception {
     json.key("sizes").beginArray();
-    for (int n : quick ? List.of(10) : List.of(10, 50, 100)) {
-      once(n, json);
+    String sizes = System.getProperty("bench.scaleSizes", quick ? "10" : "10,50,100");
+    for (String n : sizes.split(",")) {
+      once(Integer.parseInt(n.trim()), json);
     }
     json.endArray();
   }
@@ -58,45 +60,62 @@ final class Scale {
       long last = 0;
       boolean converged = true;
       StringBuilder problems = new StringBuilder();
-      for (Jvm j : jvms) {
-        String line = j.await("", 90_000);
+      for (int k = 0; k < jvms.size(); k++) {
+        String line;
+        try {
+          line = jvms.get(k).await("", 90_000);
+        } catch (IOException e) {
+          line = "JVM " + k + ": " + e.getMessage();
+        }
         if (line.startsWith("CONVERGED")) {
           last = Math.max(last, Long.parseLong(line.substring(10).trim()));
         } else {
           converged = false;
-          problems.append(line).append("; ");
+          problems.append(line.length() > 300 ? line.substring(0, 300) + "..." : line).append("; ");
         }
       }
       List<long[]> heaps = new ArrayList<>();
-      for (Jvm j : jvms) {
-        j.send("HEAP");
-        String[] h = j.await("HEAP", 60_000).split(" ");
-        heaps.add(new long[] {Long.parseLong(h[0]), Long.parseLong(h[1]), Long.parseLong(h[2])});
+      for (int k = 0; k < jvms.size(); k++) {
+        try {
+          jvms.get(k).send("HEAP");
+          String[] h = jvms.get(k).await("HEAP", 60_000).split(" ");
+          heaps.add(new long[] {Long.parseLong(h[0]), Long.parseLong(h[1]), Long.parseLong(h[2])});
+        } catch (IOException e) {
+          heaps.add(null);
+          problems.append("JVM ").append(k).append(" (").append(counts.get(k))
+              .append(k == 0 ? " container, -Xmx16m" : " containers").append(") gave no heap figure: ")
+              .append(e.getMessage()).append("; ");
+        }
       }
       long bigHeap = 0;
       int bigCount = 0;
-      for (int k = 1; k < jvms.size(); k++) {
-        bigHeap += heaps.get(k)[1] - heaps.get(k)[0];
-        bigCount += counts.get(k);
+      long threads = 0;
+      for (int k = 0; k < jvms.size(); k++) {
+        long[] h = heaps.get(k);
+        if (h != null) {
+          threads += h[2];
+          if (k > 0) {
+            bigHeap += h[1] - h[0];
+            bigCount += counts.get(k);
+          }
+        }
       }
+      long[] single = heaps.get(0);
       json.begin();
       json.field("containers", n);
       json.field("jvms", jvms.size());
       json.field("converged", converged);
       json.field("convergence_ms", converged ? (last - go) / 1e3 : null);
       json.field("problems", problems.toString());
-      json.field("heap_per_container_mb", Math.round(bigHeap / (double) bigCount / 1e4) / 100.0);
+      json.field("heap_per_container_mb", bigCount == 0 ? null : Math.round(bigHeap / (double) bigCount / 1e4) / 100.0);
       json.field("single_container_jvm_xmx16m_heap_mb",
-          Math.round((heaps.get(0)[1] - heaps.get(0)[0]) / 1e4) / 100.0);
-      json.field("single_container_jvm_total_heap_mb", Math.round(heaps.get(0)[1] / 1e4) / 100.0);
-      long threads = 0;
-      for (long[] h : heaps) {
-        threads += h[2];
-      }
+          single == null ? null : Math.round((single[1] - single[0]) / 1e4) / 100.0);
+      json.field("single_container_jvm_total_heap_mb", single == null ? null : Math.round(single[1] / 1e4) / 100.0);
       json.field("threads_total", threads);
       json.end();
-      System.err.printf("scale %d: converged=%s in %.0f ms, heap/container %.2f MB, threads %d%n", n,
-          converged, (last - go) / 1e3, bigHeap / (double) bigCount / 1e6, threads);
+      System.err.printf("scale %d: converged=%s in %.0f ms, heap/container %.2f MB, threads %d %s%n", n,
+          converged, (last - go) / 1e3, bigCount == 0 ? -1 : bigHeap / (double) bigCount / 1e6, threads,
+          problems);
     } finally {
       for (Jvm j : jvms) {
         j.close();
