@@ -76,6 +76,7 @@ def main():
     jmh = load(res, "jmh.json") or []
     life = load(res, "lifecycle.json") or {}
     scale = load(res, "scale.json") or {}
+    cpu = (load(res, "localcpu.json") or {}).get("cpu_ns_per_call", {})
     wall = open(os.path.join(res, "wall_s.txt")).read().strip() if os.path.exists(os.path.join(res, "wall_s.txt")) else "?"
     lat = remote.get("latency", {})
     thr = remote.get("throughput", {})
@@ -101,7 +102,9 @@ def main():
         ("64-caller throughput ≥ 2× RMI", ratio(tp(64, "trade"), tp(64, "rmi")), lambda r: r >= 2.0, rfmt),
         ("64-caller throughput ≥ gRPC-java", ratio(tp(64, "trade"), tp(64, "grpc")), lambda r: r >= 1.0, rfmt),
         ("1 MB call p50 ≤ 5 ms", None if p("1MB", "trade") is None else p("1MB", "trade") / 1000, lambda v: v <= 5, lambda v: f"{v:.2f} ms"),
-        ("local non-strict ≤ 50 ns over a MethodHandle",
+        ("local non-strict ≤ 50 ns over a MethodHandle (CPU time)",
+         None if "tradeNonStrict" not in cpu else cpu["tradeNonStrict"] - cpu["methodHandle"], lambda v: v <= 50, lambda v: f"+{v:.0f} ns"),
+        ("the same by JMH wall-clock average",
          None if "tradeNonStrict" not in local else local["tradeNonStrict"] - local["methodHandle"], lambda v: v <= 50, lambda v: f"+{v:.0f} ns"),
         ("start → callable ≤ 300 ms (median)", med("start_to_callable_ms"), lambda v: v <= 300, lambda v: f"{v:.0f} ms"),
         ("kill -9 → left ≤ 1 s (worst)", mx("kill_to_left_ms"), lambda v: v <= 1000, lambda v: f"{v:.0f} ms"),
@@ -164,13 +167,19 @@ def main():
             w(f"| {LABELS[s]} | {fmt(tp(1, s))} | {fmt(tp(16, s))} | {fmt(tp(64, s))} | "
               f"{rfmt(ratio(tp(64, s), tp(64, 'rmi')))} | {rfmt(ratio(tp(64, s), tp(64, 'grpc')))} |")
         w("")
-    if local:
-        w("## Local calls (JMH, ns per call)\n")
-        w("| benchmark | ns/op | ± (99.9 %) | over MethodHandle |")
-        w("|---|---|---|---|")
+    if local or cpu:
+        w("## Local calls (ns per call)\n")
+        w("JMH (`LocalCallBench`, average wall-clock time, one fork) and the same calls timed by the "
+          "calling thread's CPU time (`LocalCpu`: median of 7 × 2 million calls). On a machine whose load "
+          "exceeds its cores, wall time also counts the time the thread waited for a core, so the CPU-time "
+          "column is the one to read; the goal is judged on it. `methodHandle` is a handle held in a "
+          "field (not a constant), which is what a dispatcher uses.\n")
+        w("| benchmark | JMH ns/op | ± (99.9 %) | CPU ns/call | CPU over MethodHandle |")
+        w("|---|---|---|---|---|")
         for b in ("direct", "methodHandle", "tradeNonStrict", "tradeStrict", "tradeNonStrict1KB", "tradeStrict1KB"):
-            if b in local:
-                w(f"| {b} | {local[b]:.1f} | {local_err[b]:.1f} | {local[b] - local['methodHandle']:+.1f} |")
+            j = f"{local[b]:.1f} | {local_err[b]:.1f}" if b in local else "– | –"
+            c = f"{cpu[b]:.1f} | {cpu[b] - cpu['methodHandle']:+.1f}" if b in cpu else "– | –"
+            w(f"| {b} | {j} | {c} |")
         w("")
     if its:
         w("## Start and death (multicast discovery on loopback)\n")
@@ -198,9 +207,17 @@ def main():
         w("|---|---|---|---|---|---|")
         for n in sorted(sizes):
             s = sizes[n]
-            conv = f"{s['convergence_ms'] / 1000:.2f} s" if s.get("converged") else f"not in 60 s ({s.get('problems')})"
-            w(f"| {n} | {s['jvms']} | {conv} | {s['heap_per_container_mb']:.2f} MB | "
-              f"{s['single_container_jvm_xmx16m_heap_mb']:.2f} / {s['single_container_jvm_total_heap_mb']:.2f} MB | {s['threads_total']} |")
+            conv = f"{s['convergence_ms'] / 1000:.2f} s" if s.get("converged") else "**not within 60 s**"
+            mb = lambda v: "–" if v is None else f"{v:.2f}"
+            w(f"| {n} | {s['jvms']} | {conv} | {mb(s['heap_per_container_mb'])} MB | "
+              f"{mb(s['single_container_jvm_xmx16m_heap_mb'])} / {mb(s['single_container_jvm_total_heap_mb'])} MB | {s['threads_total']} |")
+        w("")
+    failed = [s for s in sizes.values() if s.get("problems")]
+    if failed:
+        w("What the JVMs that did not converge reported (`TIMEOUT` lists how many services each of "
+          "their containers saw):\n")
+        for s in failed:
+            w(f"- {s['containers']} containers: `{s['problems'][:600]}`")
         w("")
     notes = os.path.join(os.path.dirname(__file__), "..", "..", "..", "report-notes.md")
     if os.path.exists(notes):
