@@ -46,7 +46,13 @@ final class Scale {
     try {
       for (int k = 0; k < counts.size(); k++) {
         String heap = k == 0 ? "-Xmx16m" : "-Xmx1g";
-        jvms.add(Jvm.start(List.of(heap, "-Xss512k"), ScaleNode.class,
+        List<String> options = new ArrayList<>(List.of(heap, "-Xss512k"));
+        // For profiling the first big JVM: -Dbench.nodeOptions=-XX:StartFlightRecording=filename=x.jfr
+        String extra = System.getProperty("bench.nodeOptions", "");
+        if (k == 1 && !extra.isBlank()) {
+          options.addAll(List.of(extra.trim().split("\\s+")));
+        }
+        jvms.add(Jvm.start(options, ScaleNode.class,
             logs.resolve("scale-" + n + "-" + k + ".log"), sysId, port,
             Integer.toString(counts.get(k)), Integer.toString(n), "c" + k + "-"));
       }
