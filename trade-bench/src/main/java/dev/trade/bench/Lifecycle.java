@@ -5,7 +5,6 @@ import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ThreadLocalRandom;
@@ -68,51 +67,63 @@ final class Lifecycle {
   void run(Json json) throws Exception {
     String sysId = "bench-" + Long.toHexString(ThreadLocalRandom.current().nextLong());
     String port = Integer.toString(40_000 + ThreadLocalRandom.current().nextInt(20_000));
-    List<long[]> rows = new ArrayList<>();
+    Path archive = logs.resolve("provider-appcds.jsa");
     try (TRADEContainer peer = discovering(TRADEContainer.builder().name("peer"), sysId, port).build()) {
       Listener listener = new Listener();
+      json.key("iterations").beginArray();
       for (int i = 0; i < iterations; i++) {
-        String group = "run" + i;
-        listener.joined = new CompletableFuture<>();
-        listener.left = new CompletableFuture<>();
-        TRADEServiceConstraints mine = new TRADEServiceConstraints().name("lifecyclePing").inGroups(group);
-        peer.requestNotification(listener, "joined", mine, null, "onJoined");
-        peer.requestNotification(listener, "left", mine, null, "onLeft");
-        Jvm provider = Jvm.start(List.of("-Xmx64m"), ProviderMain.class,
-            logs.resolve("provider.log"), sysId, port, group);
-        try {
-          String[] built = provider.await("BUILT", 30_000).split(" ");
-          long before = Long.parseLong(built[0]);
-          long[] j = listener.joined.get(30, TimeUnit.SECONDS);
-          if (j[2] != 1) {
-            throw new IllegalStateException("wrong answer from the provider");
-          }
-          Thread.sleep(500); // steady state: heartbeats flowing
-          long kill = Clock.epochMicros();
-          provider.kill();
-          long left = listener.left.get(30, TimeUnit.SECONDS);
-          long[] row = {j[1] - before, j[1] - provider.spawnedEpochMicros, j[0] - before, left - kill,
-              Long.parseLong(built[1]) - before};
-          rows.add(row);
-          System.err.printf("lifecycle %d: start->callable %.1f ms (from JVM spawn %.1f ms), "
-              + "kill->left %.1f ms%n", i, row[0] / 1e3, row[1] / 1e3, row[3] / 1e3);
-        } finally {
-          provider.close();
-          peer.cancelNotification(listener, "joined", null);
-          peer.cancelNotification(listener, "left", null);
-        }
+        iteration(peer, listener, sysId, port, "run" + i, List.of("-Xmx64m"), true, json);
       }
+      json.endArray();
+      // The same with an application class-data archive (AppCDS, JDK 13+): a training run writes
+      // it at exit, later JVMs map TRADE's and the JDK's classes instead of loading them.
+      iteration(peer, listener, sysId, port, "train", List.of("-Xmx64m",
+          "-XX:ArchiveClassesAtExit=" + archive), false, null);
+      json.key("iterations_appcds").beginArray();
+      for (int i = 0; i < iterations; i++) {
+        iteration(peer, listener, sysId, port, "cds" + i, List.of("-Xmx64m",
+            "-XX:SharedArchiveFile=" + archive), true, json);
+      }
+      json.endArray();
     }
-    json.key("iterations").beginArray();
-    for (long[] r : rows) {
+  }
+
+  private void iteration(TRADEContainer peer, Listener listener, String sysId, String port,
+      String group, List<String> options, boolean kill, Json json) throws Exception {
+    listener.joined = new CompletableFuture<>();
+    listener.left = new CompletableFuture<>();
+    TRADEServiceConstraints mine = new TRADEServiceConstraints().name("lifecyclePing").inGroups(group);
+    peer.requestNotification(listener, "joined", mine, null, "onJoined");
+    peer.requestNotification(listener, "left", mine, null, "onLeft");
+    Jvm provider = Jvm.start(options, ProviderMain.class, logs.resolve("provider.log"), sysId, port, group);
+    try {
+      String[] built = provider.await("BUILT", 30_000).split(" ");
+      long before = Long.parseLong(built[0]);
+      long[] j = listener.joined.get(30, TimeUnit.SECONDS);
+      if (j[2] != 1) {
+        throw new IllegalStateException("wrong answer from the provider");
+      }
+      if (!kill) {
+        return;
+      }
+      Thread.sleep(500); // steady state: heartbeats flowing
+      long killed = Clock.epochMicros();
+      provider.kill();
+      long left = listener.left.get(30, TimeUnit.SECONDS);
       json.begin();
-      json.field("start_to_callable_ms", r[0] / 1e3);
-      json.field("spawn_to_callable_ms", r[1] / 1e3);
-      json.field("start_to_joined_ms", r[2] / 1e3);
-      json.field("build_ms", r[4] / 1e3);
-      json.field("kill_to_left_ms", r[3] / 1e3);
+      json.field("start_to_callable_ms", (j[1] - before) / 1e3);
+      json.field("spawn_to_callable_ms", (j[1] - provider.spawnedEpochMicros) / 1e3);
+      json.field("start_to_joined_ms", (j[0] - before) / 1e3);
+      json.field("build_ms", (Long.parseLong(built[1]) - before) / 1e3);
+      json.field("kill_to_left_ms", (left - killed) / 1e3);
       json.end();
+      System.err.printf("lifecycle %s: start->callable %.1f ms (from JVM spawn %.1f ms), "
+          + "kill->left %.1f ms%n", group, (j[1] - before) / 1e3,
+          (j[1] - provider.spawnedEpochMicros) / 1e3, (left - killed) / 1e3);
+    } finally {
+      provider.close();
+      peer.cancelNotification(listener, "joined", null);
+      peer.cancelNotification(listener, "left", null);
     }
-    json.endArray();
   }
 }
