@@ -46,10 +46,16 @@ final class Jvm implements AutoCloseable {
   /** Starts {@code mainClass} with {@code jvmOptions} and {@code args}; stderr goes to {@code log}. */
   static Jvm start(List<String> jvmOptions, Class<?> mainClass, Path log, String... args)
       throws IOException {
+    return start(System.getProperty("java.class.path"), jvmOptions, mainClass, log, args);
+  }
+
+  /** As {@link #start(List, Class, Path, String...)}, on another class path. */
+  static Jvm start(String classPath, List<String> jvmOptions, Class<?> mainClass, Path log,
+      String... args) throws IOException {
     List<String> cmd = new ArrayList<>();
     cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
     cmd.add("-cp");
-    cmd.add(System.getProperty("java.class.path"));
+    cmd.add(classPath);
     cmd.add("-Djava.net.preferIPv4Stack=true");
     cmd.addAll(jvmOptions);
     cmd.add(mainClass.getName());

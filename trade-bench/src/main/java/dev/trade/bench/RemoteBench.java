@@ -50,7 +50,9 @@ final class RemoteBench {
         if (!extra.isBlank()) {
           options.addAll(List.of(extra.trim().split("\\s+")));
         }
-        Jvm jvm = Jvm.start(options, ServerMain.class,
+        String classPath = s.equals("trade-alt")
+            ? System.getProperty("bench.altClasspath") : System.getProperty("java.class.path");
+        Jvm jvm = Jvm.start(classPath, options, ServerMain.class,
             logs.resolve("server-" + s + ".log"), s);
         servers.put(s, jvm);
       }

@@ -2,7 +2,11 @@ package dev.trade.bench;
 
 import java.util.List;
 
-/** The systems under test, by name, in the order the report lists them. */
+/**
+ * The systems under test, by name, in the order the report lists them. {@code trade-alt} is TRADE
+ * again, for A/B runs of a change in the same run: its server JVM runs on the class path given by
+ * {@code -Dbench.altClasspath=...} (another build of trade-core).
+ */
 final class Systems {
   static final List<String> ALL = List.of("raw-tcp", "rmi", "grpc", "jgroups", "trade");
 
@@ -14,7 +18,7 @@ final class Systems {
       case "rmi": return Rmi.serve();
       case "grpc": return Grpc.serve();
       case "jgroups": return JGroupsRpc.serve();
-      case "trade": return TradeRpc.serve();
+      case "trade", "trade-alt": return TradeRpc.serve();
       default: throw new IllegalArgumentException("unknown system " + system);
     }
   }
@@ -25,7 +29,7 @@ final class Systems {
       case "rmi": return Rmi.connect(address);
       case "grpc": return Grpc.connect(address);
       case "jgroups": return JGroupsRpc.connect(address);
-      case "trade": return TradeRpc.connect(address);
+      case "trade", "trade-alt": return TradeRpc.connect(address);
       default: throw new IllegalArgumentException("unknown system " + system);
     }
   }
