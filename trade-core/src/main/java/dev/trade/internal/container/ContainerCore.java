@@ -240,10 +240,11 @@ public final class ContainerCore implements ServiceCaller {
   public <T> T call(ServiceDescriptor d, Class<T> returnType, Object[] args, long timeoutNanos)
       throws TRADEException {
     Object[] normalized = Arguments.normalize(d, args);
-    long deadline = System.nanoTime() + (timeoutNanos > 0 ? timeoutNanos : defaultTimeoutNanos);
+    long timeout = timeoutNanos > 0 ? timeoutNanos : defaultTimeoutNanos;
     if (d.containerId().equals(id)) {
-      return callLocal(d, returnType, normalized, deadline);
+      return callLocal(d, returnType, normalized, timeout);
     }
+    long deadline = System.nanoTime() + timeout;
     Network n = network;
     if (n == null) {
       throw LocalInvoker.unavailable(d, "this container has no network");
@@ -272,7 +273,7 @@ public final class ContainerCore implements ServiceCaller {
     return l != null ? l : ContainerCore.class.getClassLoader();
   }
 
-  private <T> T callLocal(ServiceDescriptor d, Class<T> returnType, Object[] args, long deadline)
+  private <T> T callLocal(ServiceDescriptor d, Class<T> returnType, Object[] args, long timeout)
       throws TRADEException {
     LocalService s = registry.local(d.serviceId());
     if (s == null) {
@@ -280,7 +281,7 @@ public final class ContainerCore implements ServiceCaller {
     }
     Returns.check(d, returnType, s.returnType());
     if (copier == null) {
-      return Returns.convert(d, returnType, hostChain.call(new Invocation(d, args, deadline)));
+      return Returns.convert(d, returnType, hostChain.call(Invocation.local(d, args, timeout)));
     }
     ClassLoader providerLoader = s.target().getClass().getClassLoader();
     if (providerLoader == null) {
@@ -290,7 +291,7 @@ public final class ContainerCore implements ServiceCaller {
     for (int i = 0; i < args.length; i++) {
       copies[i] = copier.copy(args[i], providerLoader);
     }
-    Object result = hostChain.call(new Invocation(d, copies, deadline));
+    Object result = hostChain.call(Invocation.local(d, copies, timeout));
     return Returns.convert(d, returnType, copier.copy(result, callerLoader(returnType)));
   }
 

@@ -25,10 +25,14 @@ final class Frames {
     return sink;
   }
 
-  /** The finished frame (length filled in). */
+  /**
+   * The finished frame (length filled in). The sink must not be used afterwards: when its array is
+   * exactly full, which is how a sink ends after a large array argument or result made it grow,
+   * that array is the frame (a 1 MB argument is then not copied once more).
+   */
   static byte[] finish(ByteSink sink) {
     sink.putInt(0, sink.size() - 4);
-    return sink.toByteArray();
+    return sink.size() == sink.array().length ? sink.array() : sink.toByteArray();
   }
 
   static void writeUuid(ByteSink out, UUID id) {

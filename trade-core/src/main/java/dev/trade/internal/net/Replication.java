@@ -132,7 +132,17 @@ final class Replication {
             neighbours.add(in.readText(MAX_TEXT));
           }
           if (topology.apply(new Topology.LinkState(owner, version, neighbours))) {
-            flood(payloadFrame(Wire.LINKS, payload), from);
+            // The owner sent this state itself to every neighbour it lists (it floods each new
+            // version over exactly those links, and gives all states to a link that comes up
+            // later): passing it to them again only multiplies frames. In a full mesh that was
+            // n - 2 copies per receiver, n^2 frames per link change.
+            byte[] frame = payloadFrame(Wire.LINKS, payload);
+            for (Link l : links.values()) {
+              String peer = l.peerId.toString();
+              if (l != from && !peer.equals(owner) && !neighbours.contains(peer)) {
+                send(l, frame);
+              }
+            }
             afterTopologyChange();
           }
           break;

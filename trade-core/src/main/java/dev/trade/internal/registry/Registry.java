@@ -13,7 +13,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.LinkedHashSet;
-import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicLong;
 
@@ -46,7 +45,8 @@ public final class Registry {
   private final String containerName;
   private final String host;
   private final AtomicLong nextServiceId = new AtomicLong(1);
-  private final Map<Long, LocalService> localById = new ConcurrentHashMap<>();
+  // Written under this' lock, read lock-free.
+  private volatile LocalIndex localById = LocalIndex.EMPTY;
   private final List<Listener> listeners = new CopyOnWriteArrayList<>();
   // Guarded by this.
   private final Map<Object, List<LocalService>> byProvider = new IdentityHashMap<>();
@@ -99,7 +99,7 @@ public final class Registry {
       List<Entry> added = new ArrayList<>(prepared.size());
       Map<Long, Entry> own = tables.get(containerId);
       for (LocalService s : prepared) {
-        localById.put(s.descriptor().serviceId(), s);
+        localById = localById.with(s);
         Entry e = new Entry(s.descriptor(), 0, s);
         own.put(s.descriptor().serviceId(), e);
         added.add(e);
@@ -137,7 +137,7 @@ public final class Registry {
     List<Entry> removed = new ArrayList<>(services.size());
     for (LocalService s : services) {
       s.deactivate();
-      localById.remove(s.descriptor().serviceId());
+      localById = localById.without(s.descriptor().serviceId());
       Entry e = own.remove(s.descriptor().serviceId());
       if (e != null) {
         removed.add(e);

@@ -1,0 +1,131 @@
+package dev.trade.bench;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.ThreadLocalRandom;
+
+/**
+ * N containers on one host (N = 10, 50, 100), found by multicast discovery on loopback: the time
+ * from "go" until every container sees every container's service, and the heap each container
+ * costs. 100 JVMs of ~40 MB resident each would mostly measure JVM start-up on 2 cores, so the
+ * containers run in a few JVMs ({@link ScaleNode}, at most 25 each, containers of one JVM are as
+ * separate as in different JVMs: own sockets, threads and tables), plus one JVM that holds a single
+ * container under {@code -Xmx16m}: direct proof that one container of an N-container system fits
+ * in 16 MB, next to the average heap per container of the big JVMs.
+ */
+final class Scale {
+  private static final int PER_JVM = 25;
+  private final Path logs;
+  private final boolean quick;
+
+  Scale(Path logs, boolean quick) {
+    this.logs = logs;
+    this.quick = quick;
+  }
+
+  void run(Json json) throws Exception {
+    json.key("sizes").beginArray();
+    String sizes = System.getProperty("bench.scaleSizes", quick ? "10" : "10,50,100");
+    for (String n : sizes.split(",")) {
+      once(Integer.parseInt(n.trim()), json);
+    }
+    json.endArray();
+  }
+
+  private void once(int n, Json json) throws Exception {
+    String sysId = "scale-" + Long.toHexString(ThreadLocalRandom.current().nextLong());
+    String port = Integer.toString(40_000 + ThreadLocalRandom.current().nextInt(20_000));
+    List<Integer> counts = new ArrayList<>();
+    counts.add(1); // the -Xmx16m JVM
+    for (int left = n - 1; left > 0; left -= PER_JVM) {
+      counts.add(Math.min(PER_JVM, left));
+    }
+    List<Jvm> jvms = new ArrayList<>();
+    try {
+      for (int k = 0; k < counts.size(); k++) {
+        String heap = k == 0 ? "-Xmx16m" : "-Xmx1g";
+        List<String> options = new ArrayList<>(List.of(heap, "-Xss512k"));
+        // For profiling the first big JVM: -Dbench.nodeOptions=-XX:StartFlightRecording=filename=x.jfr
+        String extra = System.getProperty("bench.nodeOptions", "");
+        if (k == 1 && !extra.isBlank()) {
+          options.addAll(List.of(extra.trim().split("\\s+")));
+        }
+        jvms.add(Jvm.start(options, ScaleNode.class,
+            logs.resolve("scale-" + n + "-" + k + ".log"), sysId, port,
+            Integer.toString(counts.get(k)), Integer.toString(n), "c" + k + "-"));
+      }
+      for (Jvm j : jvms) {
+        j.await("READY", 60_000);
+      }
+      long go = Clock.epochMicros();
+      for (Jvm j : jvms) {
+        j.send("GO");
+      }
+      long last = 0;
+      boolean converged = true;
+      StringBuilder problems = new StringBuilder();
+      for (int k = 0; k < jvms.size(); k++) {
+        String line;
+        try {
+          line = jvms.get(k).await("", 90_000);
+        } catch (IOException e) {
+          line = "JVM " + k + ": " + e.getMessage();
+        }
+        if (line.startsWith("CONVERGED")) {
+          last = Math.max(last, Long.parseLong(line.substring(10).trim()));
+        } else {
+          converged = false;
+          problems.append(line.length() > 300 ? line.substring(0, 300) + "..." : line).append("; ");
+        }
+      }
+      List<long[]> heaps = new ArrayList<>();
+      for (int k = 0; k < jvms.size(); k++) {
+        try {
+          jvms.get(k).send("HEAP");
+          String[] h = jvms.get(k).await("HEAP", 60_000).split(" ");
+          heaps.add(new long[] {Long.parseLong(h[0]), Long.parseLong(h[1]), Long.parseLong(h[2])});
+        } catch (IOException e) {
+          heaps.add(null);
+          problems.append("JVM ").append(k).append(" (").append(counts.get(k))
+              .append(k == 0 ? " container, -Xmx16m" : " containers").append(") gave no heap figure: ")
+              .append(e.getMessage()).append("; ");
+        }
+      }
+      long bigHeap = 0;
+      int bigCount = 0;
+      long threads = 0;
+      for (int k = 0; k < jvms.size(); k++) {
+        long[] h = heaps.get(k);
+        if (h != null) {
+          threads += h[2];
+          if (k > 0) {
+            bigHeap += h[1] - h[0];
+            bigCount += counts.get(k);
+          }
+        }
+      }
+      long[] single = heaps.get(0);
+      json.begin();
+      json.field("containers", n);
+      json.field("jvms", jvms.size());
+      json.field("converged", converged);
+      json.field("convergence_ms", converged ? (last - go) / 1e3 : null);
+      json.field("problems", problems.toString());
+      json.field("heap_per_container_mb", bigCount == 0 ? null : Math.round(bigHeap / (double) bigCount / 1e4) / 100.0);
+      json.field("single_container_jvm_xmx16m_heap_mb",
+          single == null ? null : Math.round((single[1] - single[0]) / 1e4) / 100.0);
+      json.field("single_container_jvm_total_heap_mb", single == null ? null : Math.round(single[1] / 1e4) / 100.0);
+      json.field("threads_total", threads);
+      json.end();
+      System.err.printf("scale %d: converged=%s in %.0f ms, heap/container %.2f MB, threads %d %s%n", n,
+          converged, (last - go) / 1e3, bigCount == 0 ? -1 : bigHeap / (double) bigCount / 1e6, threads,
+          problems);
+    } finally {
+      for (Jvm j : jvms) {
+        j.close();
+      }
+    }
+  }
+}

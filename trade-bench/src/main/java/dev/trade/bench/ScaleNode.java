@@ -1,0 +1,118 @@
+package dev.trade.bench;
+
+import dev.trade.TRADEContainer;
+import dev.trade.TRADEService;
+import dev.trade.TRADEServiceConstraints;
+import java.io.BufferedReader;
+import java.io.InputStreamReader;
+import java.lang.management.ManagementFactory;
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * One JVM of the scale benchmark: on {@code GO} it builds {@code count} containers (discovery on
+ * loopback), each registering one service, and prints {@code CONVERGED <epoch-us>} once every one
+ * of them sees all {@code total} services of the system (or {@code TIMEOUT <seen...>} after 60 s).
+ * Then it prints {@code HEAP <baseline> <after> <threads>}: heap in use after full GCs before the
+ * containers were built and with them running. Exits when standard input closes (at most 10 min).
+ *
+ * <p>Arguments: system id, broadcast port, count, total, name prefix.
+ */
+public final class ScaleNode {
+  /** Each container's one service. */
+  public static final class Probe {
+    @TRADEService
+    public int scaleProbe() {
+      return 1;
+    }
+  }
+
+  private ScaleNode() {}
+
+  public static void main(String[] args) throws Exception {
+    String sysId = args[0];
+    String port = args[1];
+    int count = Integer.parseInt(args[2]);
+    int total = Integer.parseInt(args[3]);
+    String prefix = args[4];
+    Thread watchdog = new Thread(() -> {
+      try {
+        Thread.sleep(10 * 60_000L);
+      } catch (InterruptedException e) {
+        return;
+      }
+      Runtime.getRuntime().halt(3);
+    });
+    watchdog.setDaemon(true);
+    watchdog.start();
+    // Load and initialise TRADE's classes before the baseline.
+    try (TRADEContainer warm = TRADEContainer.builder().name("warm").build()) {
+      warm.registerAllServices(new Probe());
+      warm.getAvailableServices(new TRADEServiceConstraints().name("scaleProbe"));
+    }
+    long baseline = usedHeapAfterGc();
+    BufferedReader in = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8));
+    System.out.println("READY");
+    System.out.flush();
+    if (!"GO".equals(in.readLine())) {
+      return;
+    }
+    List<TRADEContainer> containers = new ArrayList<>();
+    for (int i = 0; i < count; i++) {
+      TRADEContainer c = Lifecycle.discovering(TRADEContainer.builder().name(prefix + i), sysId, port)
+          .build();
+      c.registerAllServices(new Probe());
+      containers.add(c);
+    }
+    TRADEServiceConstraints probe = new TRADEServiceConstraints().name("scaleProbe");
+    long until = System.nanoTime() + 60_000_000_000L;
+    boolean converged = false;
+    while (System.nanoTime() < until) {
+      converged = true;
+      for (TRADEContainer c : containers) {
+        if (c.getAvailableServices(probe).size() < total) {
+          converged = false;
+          break;
+        }
+      }
+      if (converged) {
+        break;
+      }
+      Thread.sleep(10);
+    }
+    if (converged) {
+      System.out.println("CONVERGED " + Clock.epochMicros());
+    } else {
+      StringBuilder seen = new StringBuilder("TIMEOUT");
+      for (TRADEContainer c : containers) {
+        seen.append(' ').append(c.getAvailableServices(probe).size());
+      }
+      System.out.println(seen);
+    }
+    System.out.flush();
+    // The other JVMs may still be converging; measure once everyone is done.
+    if (!"HEAP".equals(in.readLine())) {
+      return;
+    }
+    long after = usedHeapAfterGc();
+    System.out.println("HEAP " + baseline + " " + after + " "
+        + ManagementFactory.getThreadMXBean().getThreadCount());
+    System.out.flush();
+    while (in.readLine() != null) {
+      // Keep the containers up until the parent closes our input.
+    }
+    for (TRADEContainer c : containers) {
+      c.close();
+    }
+    System.exit(0);
+  }
+
+  private static long usedHeapAfterGc() throws InterruptedException {
+    for (int i = 0; i < 3; i++) {
+      System.gc();
+      Thread.sleep(100);
+    }
+    return ManagementFactory.getMemoryMXBean().getHeapMemoryUsage().getUsed();
+  }
+}
