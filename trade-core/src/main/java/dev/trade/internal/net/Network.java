@@ -125,8 +125,8 @@ public final class Network implements AutoCloseable {
     for (PeerAddress a : settings.connectContainers()) {
       connector.keepConnected(new InetSocketAddress(a.host(), a.port()));
     }
-    long beat = settings.heartbeatInterval().toMillis();
-    timer.scheduleAtFixedRate(this::heartbeat, beat, beat, TimeUnit.MILLISECONDS);
+    new Heartbeat(links.values(), settings.heartbeatInterval(), settings.failureTimeout(), timer,
+        workers).start();
     if (settings.startDiscovery() || settings.startBroadcast()) {
       finder(settings.startBroadcast(), settings.startDiscovery());
     }
@@ -358,48 +358,6 @@ public final class Network implements AutoCloseable {
       });
     }
   };
-
-  private void heartbeat() {
-    long now = System.nanoTime();
-    long interval = settings.heartbeatInterval().toNanos();
-    long silence = settings.failureTimeout().toNanos();
-    byte[] ping = Frames.finish(Frames.start(Wire.PING, 0));
-    for (Link l : links.values()) {
-      long quiet = now - l.lastReceived;
-      if (quiet >= silence) {
-        closeSilent(l, quiet);
-        continue;
-      }
-      if (silence - quiet < interval) {
-        // It would pass FAILURETIMEOUT before the next beat: look again exactly then, so that a
-        // silent peer is declared gone after FAILURETIMEOUT, not up to one interval later.
-        timer.schedule(() -> checkSilence(l), silence - quiet, TimeUnit.NANOSECONDS);
-      }
-      if (now - l.lastSent >= interval) {
-        // On a worker: a ping that finds a large frame being written must not hold up the
-        // heartbeats (and silence checks) of every other link.
-        workers.execute(() -> {
-          try {
-            l.send(ping);
-          } catch (IOException e) {
-            // send() closed the link; its reader reports it.
-          }
-        });
-      }
-    }
-  }
-
-  private void checkSilence(Link l) {
-    long quiet = System.nanoTime() - l.lastReceived;
-    if (!l.isClosed() && quiet >= settings.failureTimeout().toNanos()) {
-      closeSilent(l, quiet);
-    }
-  }
-
-  private void closeSilent(Link l, long quietNanos) {
-    l.close("silent for " + TimeUnit.NANOSECONDS.toMillis(quietNanos)
-        + " ms (FAILURETIMEOUT=" + settings.failureTimeout().toMillis() + ")");
-  }
 
   /** Says goodbye to every neighbour, closes all links and stops all threads. */
   @Override
