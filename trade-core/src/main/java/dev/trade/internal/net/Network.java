@@ -280,7 +280,7 @@ public final class Network implements AutoCloseable {
             throw new IOException("short frame of type " + type);
           }
           if (type == Wire.CALL) {
-            calls.onCall(payload);
+            calls.onCall(link, payload);
           } else {
             calls.onReply(payload);
           }
