@@ -107,6 +107,9 @@ def main():
         ("the same by JMH wall-clock average",
          None if "tradeNonStrict" not in local else local["tradeNonStrict"] - local["methodHandle"], lambda v: v <= 50, lambda v: f"+{v:.0f} ns"),
         ("start → callable ≤ 300 ms (median)", med("start_to_callable_ms"), lambda v: v <= 300, lambda v: f"{v:.0f} ms"),
+        ("the same with an AppCDS archive (median)",
+         statistics.median([i["start_to_callable_ms"] for i in life.get("iterations_appcds", [])])
+         if life.get("iterations_appcds") else None, lambda v: v <= 300, lambda v: f"{v:.0f} ms"),
         ("kill -9 → left ≤ 1 s (worst)", mx("kill_to_left_ms"), lambda v: v <= 1000, lambda v: f"{v:.0f} ms"),
         ("100 containers converge ≤ 10 s",
          None if not s100 else (s100.get("convergence_ms") if s100.get("converged") else float("inf")),

@@ -11,6 +11,8 @@ import java.security.GeneralSecurityException;
 import java.util.Arrays;
 import java.util.ArrayDeque;
 import java.util.UUID;
+import java.util.concurrent.Executor;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.atomic.AtomicBoolean;
 
 /**
@@ -19,14 +21,15 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * <p><b>Writing</b> combines frames: a sender that finds the socket idle writes its frame itself
  * (no thread hand-off on the latency path); senders that arrive while a write is in progress only
  * queue their frame, and the writing thread drains the queue before it flushes, so concurrent calls
- * share system calls. <b>Reading</b> happens on one daemon thread per link, which hands each frame
- * to the {@link Handler}.
+ * share system calls. <b>Reading</b> happens on one thread at a time, which hands each frame to the
+ * {@link Handler}; the handler may keep that thread for a call and let reading go on in another
+ * ({@link #moveReading}).
  *
  * <p>This class is safe for concurrent use.
  */
 final class Link {
   private static final int BUFFER = 8 * 1024;
-  /** Receives what a link reads; called on the link's reader thread. */
+  /** Receives what a link reads; called on the thread that is reading the link. */
   interface Handler {
     void frame(Link link, int type, byte[] payload) throws IOException;
 
@@ -51,6 +54,9 @@ final class Link {
   private boolean writing;
   // Guarded by queue: set when the link is to close once the queued frames are written.
   private String closeWhenDrained;
+  private Handler handler;
+  // The thread in the read loop; null while reading moves to another one.
+  private volatile Thread reader;
   volatile long lastReceived = System.nanoTime();
   volatile long lastSent = System.nanoTime();
 
@@ -71,9 +77,31 @@ final class Link {
 
   /** Starts the reader thread. */
   void start(Handler handler) {
-    Thread t = new Thread(() -> readLoop(handler), "trade-link-" + peerName);
+    this.handler = handler;
+    Thread t = new Thread(this::readLoop, "trade-reader-" + peerName);
     t.setDaemon(true);
     t.start();
+  }
+
+  /**
+   * Called by the handler, on the reading thread, for a frame whose work it wants to do on this
+   * thread (a call to serve): reading goes on in a thread of {@code executor} at once, and this
+   * thread leaves the read loop when the handler returns. The work then starts without waking
+   * another thread first; only the next read waits for that wake-up, off the caller's path.
+   *
+   * @return false if reading stays here ({@code executor} refused), so the handler hands its work off
+   */
+  boolean moveReading(Executor executor) {
+    reader = null;
+    Thread.currentThread().setName("trade-serving-" + peerName); // no longer this link's reader
+    try {
+      executor.execute(this::readLoop);
+      return true;
+    } catch (RejectedExecutionException closing) {
+      reader = Thread.currentThread();
+      Thread.currentThread().setName("trade-link-" + peerName);
+      return false;
+    }
   }
 
   /**
@@ -131,7 +159,20 @@ final class Link {
     }
   }
 
-  private void readLoop(Handler handler) {
+  private void readLoop() {
+    Thread self = Thread.currentThread();
+    String ownName = self.getName();
+    // Whichever thread reads the link carries its name, so thread dumps show who reads what.
+    self.setName("trade-link-" + peerName);
+    try {
+      readFrames();
+    } finally {
+      self.setName(ownName);
+    }
+  }
+
+  private void readFrames() {
+    reader = Thread.currentThread();
     String reason = "closed";
     try {
       while (!closed.get()) {
@@ -174,6 +215,9 @@ final class Link {
         }
         lastReceived = System.nanoTime();
         handler.frame(this, type, payload);
+        if (reader != Thread.currentThread()) {
+          return; // reading moved on to another thread; this one served a call
+        }
       }
     } catch (IOException e) {
       reason = "connection to " + peerName + " lost: " + e.getMessage();

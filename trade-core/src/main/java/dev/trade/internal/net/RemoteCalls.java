@@ -164,7 +164,11 @@ final class RemoteCalls {
     }
   }
 
-  /** A CALL frame arrived over {@code from} (reader thread). */
+  /**
+   * A CALL frame arrived over {@code from} (its reader thread). The reading thread serves it itself
+   * and reading goes on in another thread: a slow service still never blocks the link, and the call
+   * does not wait for a worker to wake up first (one thread wake-up less per call).
+   */
   void onCall(Link from, byte[] payload) {
     UUID destination = Frames.destination(payload);
     if (!destination.equals(self)) {
@@ -172,7 +176,11 @@ final class RemoteCalls {
       return;
     }
     try {
-      executor.execute(() -> serve(from, payload));
+      if (from.moveReading(executor)) {
+        serve(from, payload);
+      } else {
+        executor.execute(() -> serve(from, payload));
+      }
     } catch (RejectedExecutionException closing) {
       // The container is closing; the caller learns it from the link going down.
     }
