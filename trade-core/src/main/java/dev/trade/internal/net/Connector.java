@@ -3,7 +3,6 @@ package dev.trade.internal.net;
 import java.io.IOException;
 import java.lang.System.Logger;
 import java.lang.System.Logger.Level;
-import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
@@ -256,9 +255,6 @@ final class Connector {
         + " ms");
   }
 
-  static boolean isWildcard(InetAddress a) {
-    return a.isAnyLocalAddress();
-  }
 
   void close() {
     closed = true;

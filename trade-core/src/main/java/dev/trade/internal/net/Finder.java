@@ -15,7 +15,6 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 import java.util.UUID;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ScheduledExecutorService;
@@ -143,15 +142,6 @@ final class Finder implements AutoCloseable {
       }
     }
     return result;
-  }
-
-  /** Packets dropped so far, by reason (for diagnosis). */
-  Map<?, Long> dropCounts() {
-    return discovery.dropCounts();
-  }
-
-  Set<String> interfaceNames() {
-    return Set.copyOf(discovery.interfaceNames());
   }
 
   @Override

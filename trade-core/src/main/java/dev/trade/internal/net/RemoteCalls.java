@@ -28,6 +28,7 @@ import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Predicate;
 
 /**
  * Remote calls over links: the calling side (request ids, pending replies, deadlines), the providing
@@ -379,31 +380,21 @@ final class RemoteCalls {
 
   /** Fails at once every call waiting on {@code container} (it left or became unreachable). */
   void failTo(UUID container, String why) {
-    pending.values().removeIf(p -> {
-      if (p.destination.equals(container)) {
-        p.reply.completeExceptionally(new TRADEServiceUnavailableException(
-            "Service not available any longer: " + why));
-        return true;
-      }
-      return false;
-    });
+    fail(p -> p.destination.equals(container), why);
   }
 
   /** Fails at once every call that left through the link to {@code neighbour}. */
   void failVia(UUID neighbour, String why) {
-    pending.values().removeIf(p -> {
-      if (p.via.equals(neighbour)) {
-        p.reply.completeExceptionally(new TRADEServiceUnavailableException(
-            "Service not available any longer: " + why));
-        return true;
-      }
-      return false;
-    });
+    fail(p -> p.via.equals(neighbour), why);
   }
 
   /** Fails every waiting call (the container closes). */
   void failAll(String why) {
-    pending.values().removeIf(p -> p.reply.completeExceptionally(
+    fail(p -> true, why);
+  }
+
+  private void fail(Predicate<Pending> which, String why) {
+    pending.values().removeIf(p -> which.test(p) && p.reply.completeExceptionally(
         new TRADEServiceUnavailableException("Service not available any longer: " + why)));
   }
 }

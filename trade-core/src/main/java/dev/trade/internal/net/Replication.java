@@ -33,7 +33,6 @@ final class Replication {
   /** How long the link state of an unreachable container is kept (it may be reachable soon). */
   private static final long STATE_GRACE_NANOS = 60_000_000_000L;
 
-  private final UUID self;
   private final String selfId;
   private final Registry registry;
   private final Codec tableCodec;
@@ -57,7 +56,6 @@ final class Replication {
   Replication(UUID self, Registry registry, Codec tableCodec, Map<UUID, Link> links, RemoteCalls calls,
       long holdDownNanos, Scheduler scheduler) {
     this.scheduler = scheduler;
-    this.self = self;
     this.selfId = self.toString();
     this.registry = registry;
     this.tableCodec = tableCodec;
