@@ -74,17 +74,8 @@ public final class Network implements AutoCloseable {
     this.control = Executors.newSingleThreadExecutor(daemon("trade-control-" + name));
     this.timer = Executors.newSingleThreadScheduledExecutor(daemon("trade-timer-" + name));
     this.workers = Executors.newCachedThreadPool(daemon("trade-worker-" + name));
-    this.calls = new RemoteCalls(self, codec, this::nextHop, new RemoteCalls.Host() {
-      @Override
-      public LocalService local(long serviceId) {
-        return provider.local(serviceId);
-      }
-
-      @Override
-      public Object invoke(Invocation call) throws TRADEException {
-        return provider.invoke(call);
-      }
-    }, workers, timer, settings.maxFrameSize());
+    this.calls = new RemoteCalls(self, codec, this::nextHop, provider, workers, timer,
+        settings.maxFrameSize());
     this.replication = new Replication(self, registry, tableCodec, links, calls,
         settings.failureTimeout().plus(settings.heartbeatInterval()).toNanos(),
         (task, delay) -> {

@@ -48,19 +48,12 @@ final class RemoteCalls {
     Link nextHop(UUID container);
   }
 
-  /** The providing side of this container. */
-  interface Host {
-    LocalService local(long serviceId);
-
-    Object invoke(Invocation call) throws TRADEException;
-  }
-
   private record Pending(CompletableFuture<byte[]> reply, UUID destination, UUID via) {}
 
   private final UUID self;
   private final Codec codec;
   private final Router router;
-  private final Host host;
+  private final Network.Host host;
   private final Executor executor;
   private final ScheduledExecutorService timer;
   private final int maxFrame;
@@ -68,7 +61,7 @@ final class RemoteCalls {
   private final Map<Long, Pending> pending = new ConcurrentHashMap<>();
 
   /** @param maxFrame the largest frame (after its length field) that peers accept: MAXFRAMESIZE */
-  RemoteCalls(UUID self, Codec codec, Router router, Host host, Executor executor,
+  RemoteCalls(UUID self, Codec codec, Router router, Network.Host host, Executor executor,
       ScheduledExecutorService timer, int maxFrame) {
     this.self = self;
     this.codec = codec;
