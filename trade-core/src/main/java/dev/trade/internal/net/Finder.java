@@ -13,32 +13,56 @@ import java.net.NetworkInterface;
 import java.net.SocketException;
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.UUID;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.function.Predicate;
 import java.util.function.Supplier;
 
 /**
- * Turns multicast discovery into links: announces this container's listen addresses and, on
- * hearing a container of the same system it has no link to, connects to it. Of two containers that
- * hear each other, the one with the smaller id dials at once and the other only if no link appeared
- * shortly after, so that normally one connection is made, not two. Safe for concurrent use.
+ * Turns multicast discovery into links: announces this container's listen addresses, keeps the
+ * set of live containers it hears, and dials the ones {@link Overlay} chooses out of that set
+ * (all of them in a small system, O(log n) in a large one; the rest are reached by forwarding).
+ * A container stays known until it has not announced itself for three intervals, or until
+ * routing finds it unreachable ({@link #forget}). Links that exist are never closed here, whoever
+ * made them.
+ *
+ * <p>Of two containers that choose each other, the one with the smaller id dials at once and the
+ * other only if no link appeared shortly after, so that normally one connection is made, not two;
+ * a container that only one side chooses is dialled at once. Safe for concurrent use.
  */
 final class Finder implements AutoCloseable {
   private static final Logger LOG = System.getLogger("dev.trade.discovery");
   private static final long SECOND_SIDE_DELAY_MS = 300;
   private static final long DIAL_GRACE_MS = 2_000;
+  private static final long SWEEP_MS = 1_000;
+  private static final long SETTLE_MS = 100;
+  /** How long a forgotten container's old announcements are ignored (the replay guard's window). */
+  private static final long FORGET_NANOS = TimeUnit.SECONDS.toNanos(60);
+
+  /** A container heard: its latest announcement, and when that arrived (nanoTime). */
+  private record Heard(Announcement announcement, long atNanos) {}
 
   private final UUID self;
   private final Predicate<UUID> linked;
   private final Connector connector;
   private final ScheduledExecutorService timer;
   private final Discovery discovery;
+  private final long expiry;
   private final Map<UUID, Long> dialling = new ConcurrentHashMap<>();
+  private final Map<UUID, Heard> known = new ConcurrentHashMap<>();
+  /** Containers that left: the last announcement sequence seen and when (nanoTime). */
+  private final Map<UUID, long[]> forgotten = new ConcurrentHashMap<>();
+  private final ScheduledFuture<?> sweep;
+  private final AtomicBoolean choosing = new AtomicBoolean();
+  private volatile Set<UUID> wanted = Set.of();
 
   Finder(Settings settings, UUID self, String name, Supplier<List<InetSocketAddress>> listening,
       Predicate<UUID> linked, Connector connector, ScheduledExecutorService timer, boolean broadcast,
@@ -47,6 +71,7 @@ final class Finder implements AutoCloseable {
     this.linked = linked;
     this.connector = connector;
     this.timer = timer;
+    this.expiry = 3 * settings.broadcastInterval().toNanos() + TimeUnit.MILLISECONDS.toNanos(SWEEP_MS);
     this.discovery = Discovery.builder()
         .systemId(settings.tradeSysId())
         .credentials(settings.credentials())
@@ -61,6 +86,7 @@ final class Finder implements AutoCloseable {
         .broadcast(broadcast)
         .discovery(discover)
         .start();
+    this.sweep = timer.scheduleWithFixedDelay(this::sweep, SWEEP_MS, SWEEP_MS, TimeUnit.MILLISECONDS);
   }
 
   void setBroadcast(boolean on) {
@@ -84,6 +110,24 @@ final class Finder implements AutoCloseable {
     discovery.announceNow();
   }
 
+  /**
+   * Forgets {@code peer} (routing found it unreachable: it left or died), so that the overlay forms
+   * again without it at once; its announcements count again only when newer than the last one
+   * heard. Any thread.
+   */
+  void forget(UUID peer) {
+    Heard h = known.remove(peer);
+    if (h != null) {
+      forgotten.put(peer, new long[] {h.announcement().sequence(), System.nanoTime()});
+      membershipChanged();
+    }
+  }
+
+  /** The containers this one currently chooses to dial (for tests and logs). */
+  Set<UUID> wanted() {
+    return wanted;
+  }
+
   private void heard(Announcement a, InetAddress from) {
     UUID peer;
     try {
@@ -92,7 +136,56 @@ final class Finder implements AutoCloseable {
       LOG.log(Level.DEBUG, "ignoring announcement with a foreign container id from {0}", from);
       return;
     }
-    if (peer.equals(self) || linked.test(peer) || a.addresses().isEmpty()) {
+    if (peer.equals(self) || a.addresses().isEmpty()) {
+      return;
+    }
+    long[] gone = forgotten.get(peer);
+    if (gone != null) {
+      if (a.sequence() <= gone[0]) {
+        return; // sent before it left, and delivered late
+      }
+      forgotten.remove(peer);
+    }
+    if (known.put(peer, new Heard(a, System.nanoTime())) == null) {
+      membershipChanged();
+    } else if (wanted.contains(peer)) {
+      consider(peer);
+    }
+  }
+
+  /**
+   * Chooses again {@link #SETTLE_MS} after the first change, with every change heard until then:
+   * a newcomer hears the answers of all the others within milliseconds, and choosing at the first
+   * one would fully mesh it with whoever answered first, links that then stay.
+   */
+  private void membershipChanged() {
+    if (choosing.compareAndSet(false, true)) {
+      timer.schedule(this::choose, SETTLE_MS, TimeUnit.MILLISECONDS);
+    }
+  }
+
+  private void choose() {
+    choosing.set(false);
+    Set<UUID> now = Set.copyOf(Overlay.chosen(self, known.keySet(), linkedNow()));
+    wanted = now;
+    for (UUID peer : now) {
+      consider(peer);
+    }
+  }
+
+  private Set<UUID> linkedNow() {
+    Set<UUID> result = new HashSet<>();
+    for (UUID peer : known.keySet()) {
+      if (linked.test(peer)) {
+        result.add(peer);
+      }
+    }
+    return result;
+  }
+
+  /** Dials {@code peer} unless linked or a dial is under way (see the class comment for when). */
+  private void consider(UUID peer) {
+    if (linked.test(peer)) {
       return;
     }
     long now = System.nanoTime();
@@ -101,21 +194,45 @@ final class Finder implements AutoCloseable {
       return; // a dial is under way
     }
     dialling.put(peer, now);
-    if (self.compareTo(peer) < 0) {
-      dial(peer, a);
+    if (Network.compareIds(self, peer) < 0 || !Overlay.chooses(peer, self, known.keySet())) {
+      dial(peer);
     } else {
       timer.schedule(() -> {
-        if (!linked.test(peer)) {
-          dial(peer, a);
+        if (!linked.test(peer) && wanted.contains(peer)) {
+          dial(peer);
         }
       }, SECOND_SIDE_DELAY_MS, TimeUnit.MILLISECONDS);
     }
   }
 
-  private void dial(UUID peer, Announcement a) {
+  private void dial(UUID peer) {
+    Heard h = known.get(peer);
+    if (h == null) {
+      return;
+    }
+    Announcement a = h.announcement();
     LOG.log(Level.DEBUG, "heard {0} ({1}) at {2}; connecting", a.containerName(), peer, a.addresses());
     for (InetSocketAddress address : a.addresses()) {
       connector.connectOnce(address); // in parallel: the first to finish its handshake wins
+    }
+  }
+
+  /**
+   * Once a second: drops containers that stopped announcing, dials chosen containers whose link
+   * was lost (or whose dial failed), and forgets old bookkeeping.
+   */
+  private void sweep() {
+    long now = System.nanoTime();
+    boolean changed = known.entrySet().removeIf(e -> now - e.getValue().atNanos() > expiry
+        && !linked.test(e.getKey()));
+    dialling.values().removeIf(t -> now - t > TimeUnit.MILLISECONDS.toNanos(DIAL_GRACE_MS));
+    forgotten.values().removeIf(f -> now - f[1] > FORGET_NANOS);
+    if (changed) {
+      membershipChanged();
+    } else {
+      for (UUID peer : wanted) {
+        consider(peer);
+      }
     }
   }
 
@@ -146,6 +263,7 @@ final class Finder implements AutoCloseable {
 
   @Override
   public void close() {
+    sweep.cancel(false);
     discovery.close();
   }
 }

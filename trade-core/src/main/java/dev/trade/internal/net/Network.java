@@ -84,7 +84,7 @@ public final class Network implements AutoCloseable {
           } catch (RejectedExecutionException closing) {
             // Nothing left to refresh.
           }
-        });
+        }, this::unreachable);
     Handshake handshake = new Handshake(new Handshake.Identity(settings.tradeSysId(), self, name,
         host, List.of(), settings.useEncryption()), settings.credentials());
     this.connector = new Connector(name, handshake, (int) settings.clientSocketTimeout().toMillis(),
@@ -142,6 +142,17 @@ public final class Network implements AutoCloseable {
       } catch (IOException e) {
         throw new IOException("cannot listen on SERVERIPS address " + a + ": " + e.getMessage(), e);
       }
+    }
+  }
+
+  /** A container left or died (routing lost it): discovery stops counting it at once. */
+  private void unreachable(UUID container) {
+    Finder f;
+    synchronized (this) {
+      f = finder;
+    }
+    if (f != null) {
+      f.forget(container);
     }
   }
 

@@ -18,6 +18,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.UUID;
 import java.util.concurrent.Executor;
+import java.util.function.Consumer;
 
 /**
  * Keeps every container's view of the system in step: link states (for routing) and service
@@ -32,6 +33,8 @@ final class Replication {
   private static final int FAR = Integer.MAX_VALUE / 2;
   /** How long the link state of an unreachable container is kept (it may be reachable soon). */
   private static final long STATE_GRACE_NANOS = 60_000_000_000L;
+  /** The least time between two floods of this container's own link state, but see linkDown. */
+  static final long OWN_FLOOD_GAP_NANOS = 50_000_000L;
 
   private final String selfId;
   private final Registry registry;
@@ -47,15 +50,23 @@ final class Replication {
   }
 
   private final Scheduler scheduler;
+  private final Consumer<UUID> unreachable;
   private long refreshAt;
+  /** When this container's own link state last went out (nanoTime), and which version. */
+  private long ownFloodAt;
+  private long ownFlooded;
+  private boolean ownFloodPending;
 
   /**
    * @param holdDownNanos how long a container that became unreachable stays so unless it proves
    *     alive (see {@link Topology})
+   * @param unreachable told, on the control thread, of each container that was reachable and is not
+   *     any more
    */
   Replication(UUID self, Registry registry, Codec tableCodec, Map<UUID, Link> links, RemoteCalls calls,
-      long holdDownNanos, Scheduler scheduler) {
+      long holdDownNanos, Scheduler scheduler, Consumer<UUID> unreachable) {
     this.scheduler = scheduler;
+    this.unreachable = unreachable;
     this.selfId = self.toString();
     this.registry = registry;
     this.tableCodec = tableCodec;
@@ -70,8 +81,8 @@ final class Replication {
   }
 
   void linkUp(Link link) {
-    Topology.LinkState own = ownNeighboursChanged();
-    flood(linksFrame(own), link);
+    ownNeighboursChanged();
+    floodOwnSoon(link);
     for (Topology.LinkState s : topology.states()) {
       send(link, linksFrame(s));
     }
@@ -82,7 +93,41 @@ final class Replication {
   }
 
   void linkDown() {
-    flood(linksFrame(ownNeighboursChanged()), null);
+    // At once, whatever was sent last: this is how every container learns quickly that a dead
+    // neighbour's link is gone (an edge counts only while both ends list it).
+    floodOwn(ownNeighboursChanged(), null);
+  }
+
+  /**
+   * Floods this container's own link state at once after a quiet period, else once when
+   * {@link #OWN_FLOOD_GAP_NANOS} has passed since the last flood, with whatever is current then:
+   * a container that gains d links at start-up floods a few versions, not d, and every version
+   * reaches every container over every link.
+   *
+   * @param except a new link that has been sent the current state already, or null
+   */
+  private void floodOwnSoon(Link except) {
+    long since = System.nanoTime() - ownFloodAt;
+    if (ownFloodPending) {
+      return;
+    }
+    if (ownFlooded == 0 || since >= OWN_FLOOD_GAP_NANOS) {
+      floodOwn(topology.own(), except);
+      return;
+    }
+    ownFloodPending = true;
+    scheduler.schedule(() -> {
+      ownFloodPending = false;
+      if (topology.own().version() > ownFlooded) {
+        floodOwn(topology.own(), null);
+      }
+    }, OWN_FLOOD_GAP_NANOS - since);
+  }
+
+  private void floodOwn(Topology.LinkState own, Link except) {
+    ownFloodAt = System.nanoTime();
+    ownFlooded = own.version();
+    flood(linksFrame(own), except);
   }
 
   private Topology.LinkState ownNeighboursChanged() {
@@ -216,6 +261,7 @@ final class Replication {
     for (UUID gone : before.keySet()) {
       if (!hops.containsKey(gone)) {
         calls.failTo(gone, "container " + gone + " left or is not reachable any more");
+        unreachable.accept(gone);
       }
     }
     long end = topology.nextHoldDownEnd();

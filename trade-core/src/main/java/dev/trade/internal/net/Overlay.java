@@ -1,0 +1,114 @@
+package dev.trade.internal.net;
+
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.Collections;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.UUID;
+
+/**
+ * Which of the containers it has heard a container dials: every one of them in a small system, a
+ * bounded set in a large one.
+ *
+ * <p>Up to {@link #FULL_MESH_MAX} containers (this one included), each dials all the others, so
+ * that every call takes one hop. Above that, the known containers form a ring ordered by id
+ * ({@link Network#compareIds}, the order every implementation computes the same way), and each
+ * container dials its two successors on the ring plus one "finger" per interval of the id space
+ * ahead of it: [½, 1), [¼, ½), [⅛, ¼) ... of the id space, ⌈log₂ n⌉ intervals. That is at most
+ * ⌈log₂ n⌉ + 2 dialled links per container, and about as many accepted ones; each finger at
+ * least halves the id distance left to any container, so paths are about log₂ n hops long, far
+ * below the hop limit of 16. The successor links alone make a ring through every container a
+ * container knows, so the links stay connected while views of the membership differ for a moment.
+ *
+ * <p>A finger is a container this one is linked to already, if one lies in its interval; else one
+ * of the interval's containers picked by a hash of this container's id (else, for an empty
+ * interval, the first container after it). Containers join one by one and links, once made,
+ * stay: choosing by position would move most fingers at every join and leave a trail of links
+ * behind, and the hash spreads the fingers of many containers over an interval's members instead
+ * of all pointing at its first.
+ *
+ * <p>Pure functions of their arguments: the same membership and links give the same choice on
+ * every container. Thread-safe (stateless).
+ */
+final class Overlay {
+  /** Systems of at most this many containers are fully meshed. */
+  static final int FULL_MESH_MAX = 8;
+  private static final int SUCCESSORS = 2;
+
+  private Overlay() {}
+
+  /**
+   * The containers {@code self} dials, out of {@code members}.
+   *
+   * @param members every container known, with or without {@code self}
+   * @param linked the containers {@code self} has a link to now (kept as fingers where they fit)
+   * @return a new set without {@code self}
+   */
+  static Set<UUID> chosen(UUID self, Collection<UUID> members, Set<UUID> linked) {
+    List<UUID> ring = ring(self, members);
+    Set<UUID> result = new HashSet<>();
+    int n = ring.size();
+    if (n <= FULL_MESH_MAX) {
+      result.addAll(ring);
+    } else {
+      int at = ring.indexOf(self);
+      for (int k = 1; k <= SUCCESSORS; k++) {
+        result.add(ring.get((at + k) % n));
+      }
+      int fingers = 32 - Integer.numberOfLeadingZeros(n - 1); // ⌈log₂ n⌉, at most 31
+      for (int i = 1; i <= fingers; i++) {
+        result.add(finger(self, ring, i, linked));
+      }
+    }
+    result.remove(self);
+    return result;
+  }
+
+  /** Whether {@code chooser}, linked to no one yet, dials {@code peer} when it knows {@code members}. */
+  static boolean chooses(UUID chooser, UUID peer, Collection<UUID> members) {
+    return chosen(chooser, members, Set.of()).contains(peer);
+  }
+
+  /** The finger for the interval [2^(128-i), 2^(129-i)) ahead of {@code self}. */
+  private static UUID finger(UUID self, List<UUID> ring, int i, Set<UUID> linked) {
+    // Only the high half of an id matters for i <= 64: the bounds' low halves are self's.
+    UUID from = new UUID(self.getMostSignificantBits() + (1L << (64 - i)), self.getLeastSignificantBits());
+    long width = 1L << (64 - i); // of the interval, in units of the high half
+    int first = successorOf(ring, from);
+    List<UUID> inside = new ArrayList<>();
+    for (int k = first; inside.size() < ring.size(); k = (k + 1) % ring.size()) {
+      UUID c = ring.get(k);
+      long ahead = c.getMostSignificantBits() - from.getMostSignificantBits();
+      if (c.equals(self) || Long.compareUnsigned(ahead, width) >= 0) {
+        break;
+      }
+      if (linked.contains(c)) {
+        return c;
+      }
+      inside.add(c);
+    }
+    if (inside.isEmpty()) {
+      return ring.get(first);
+    }
+    long h = (self.getLeastSignificantBits() ^ self.getMostSignificantBits()) * 0x9E3779B97F4A7C15L + i;
+    return inside.get((int) Long.remainderUnsigned(h ^ (h >>> 29), inside.size()));
+  }
+
+  /** The position of the first container at or after {@code point}, cyclically. */
+  private static int successorOf(List<UUID> ring, UUID point) {
+    int i = Collections.binarySearch(ring, point, Network::compareIds);
+    int at = i >= 0 ? i : -i - 1;
+    return at == ring.size() ? 0 : at;
+  }
+
+  /** {@code members} and {@code self}, without repeats, in ring order. */
+  private static List<UUID> ring(UUID self, Collection<UUID> members) {
+    Set<UUID> all = new HashSet<>(members);
+    all.add(self);
+    List<UUID> ring = new ArrayList<>(all);
+    ring.sort(Network::compareIds);
+    return ring;
+  }
+}
