@@ -56,6 +56,8 @@ final class Replication {
   private long ownFloodAt;
   private long ownFlooded;
   private boolean ownFloodPending;
+  private boolean topologyPending;
+  private Set<String> ownFloodedNeighbours = Set.of();
 
   /**
    * @param holdDownNanos how long a container that became unreachable stays so unless it proves
@@ -124,9 +126,22 @@ final class Replication {
     }, OWN_FLOOD_GAP_NANOS - since);
   }
 
+  /**
+   * Floods this container's own state now if the last one flooded does not list {@code from} yet:
+   * a table passed on from a new neighbour must not overtake the state that routes to its owner,
+   * or receivers would list services that they cannot call yet.
+   */
+  private void ownStateBefore(Link from) {
+    if (ownFloodPending && !ownFloodedNeighbours.contains(from.peerId.toString())
+        && topology.own().version() > ownFlooded) {
+      floodOwn(topology.own(), null);
+    }
+  }
+
   private void floodOwn(Topology.LinkState own, Link except) {
     ownFloodAt = System.nanoTime();
     ownFlooded = own.version();
+    ownFloodedNeighbours = own.neighbours();
     flood(linksFrame(own), except);
   }
 
@@ -186,7 +201,7 @@ final class Replication {
                 send(l, frame);
               }
             }
-            afterTopologyChange();
+            topologyChangedSoon();
           }
           break;
         }
@@ -194,10 +209,12 @@ final class Replication {
           String owner = in.readText(MAX_TEXT);
           long version = in.readLong();
           List<ServiceDescriptor> services = descriptors(tableCodec.read(in, loader()));
+          routesNow();
           if (topology.isHeldDown(owner)) {
             break; // a stale copy of a container that just went away
           }
           if (registry.applyTable(new Registry.Table(owner, version, services), distance(owner))) {
+            ownStateBefore(from);
             flood(payloadFrame(Wire.TABLE, payload), from);
           }
           break;
@@ -207,11 +224,13 @@ final class Replication {
           long version = in.readLong();
           List<ServiceDescriptor> add = descriptors(tableCodec.read(in, loader()));
           List<Long> remove = ids(tableCodec.read(in, loader()));
+          routesNow();
           if (topology.isHeldDown(owner)) {
             break;
           }
           Registry.DeltaResult r = registry.applyDelta(owner, version, add, remove, distance(owner));
           if (r == Registry.DeltaResult.APPLIED) {
+            ownStateBefore(from);
             flood(payloadFrame(Wire.DELTA, payload), from);
           } else if (r == Registry.DeltaResult.GAP) {
             send(from, tableRequestFrame(owner));
@@ -239,7 +258,27 @@ final class Replication {
     }
   }
 
+  /**
+   * Routes, distances and departures follow received link states once the frames queued on the
+   * control thread now have been handled, not after each: at start-up every container's states
+   * arrive in bursts, and each computation walks the whole graph.
+   */
+  private void topologyChangedSoon() {
+    if (!topologyPending) {
+      topologyPending = true;
+      scheduler.schedule(this::routesNow, 0);
+    }
+  }
+
+  /** Brings routes up to date before a table is applied: a table's owner must be routable. */
+  private void routesNow() {
+    if (topologyPending) {
+      afterTopologyChange();
+    }
+  }
+
   private void afterTopologyChange() {
+    topologyPending = false;
     Map<String, Topology.Route> routes = topology.routes();
     Map<UUID, UUID> hops = new HashMap<>();
     Map<String, Integer> distances = new HashMap<>();

@@ -39,6 +39,8 @@ final class Topology {
   private final long holdDownNanos;
   private long ownVersion;
   private Map<String, Route> routes = Map.of();
+  /** States changed since routes were computed: they are computed again when next read. */
+  private boolean stale;
 
   /**
    * @param holdDownNanos how long a container that became unreachable stays so unless it shows it
@@ -63,7 +65,10 @@ final class Topology {
     return states.get(self);
   }
 
-  /** Applies another container's state; true when it was newer than what was known. */
+  /**
+   * Applies another container's state; true when it was newer than what was known. Routes are
+   * computed again when next read, not here: a burst of n states then costs one computation.
+   */
   boolean apply(LinkState s) {
     if (s.owner().equals(self)) {
       return false;
@@ -73,7 +78,7 @@ final class Topology {
       return false;
     }
     states.put(s.owner(), s);
-    recompute();
+    stale = true;
     return true;
   }
 
@@ -84,12 +89,20 @@ final class Topology {
 
   /** The route to {@code container}, or null when it is not reachable. */
   Route route(String container) {
+    fresh();
     return routes.get(container);
   }
 
   /** Reachable containers other than this one, with their routes. */
   Map<String, Route> routes() {
+    fresh();
     return routes;
+  }
+
+  private void fresh() {
+    if (stale) {
+      recompute();
+    }
   }
 
   /**
@@ -98,6 +111,7 @@ final class Topology {
    * kept for a while because a state may arrive before the states that connect its owner to us.
    */
   void pruneUnreachable(long nowNanos, long graceNanos) {
+    fresh();
     for (String owner : states.keySet()) {
       if (owner.equals(self) || routes.containsKey(owner)) {
         unreachableSince.remove(owner);
@@ -116,6 +130,7 @@ final class Topology {
 
   /** Whether {@code container} is held unreachable now (see the constructor). */
   boolean isHeldDown(String container) {
+    fresh();
     long[] h = holdDown.get(container);
     if (h == null) {
       return false;
@@ -130,6 +145,7 @@ final class Topology {
   }
 
   private void recompute() {
+    stale = false;
     long now = System.nanoTime();
     holdDown.values().removeIf(h -> now - h[1] >= 0);
     Map<String, Route> before = routes;
@@ -161,6 +177,7 @@ final class Topology {
 
   /** When the earliest hold-down ends (nanoTime), or 0 when none is in force. */
   long nextHoldDownEnd() {
+    fresh();
     long next = 0;
     for (long[] h : holdDown.values()) {
       if (next == 0 || h[1] - next < 0) {
