@@ -203,16 +203,28 @@ class LinkTest {
   void repliesToABurstOfCallsAllLeave() throws Exception {
     int burst = 200;
     Link link = new Link(near, peer("C"), true, 1 << 20);
-    Serving h = new Serving(l -> {
-      try {
-        l.send(frame(7));
-      } catch (IOException e) {
-        throw new UncheckedIOException(e);
+    Link.Handler h = new Link.Handler() {
+      @Override
+      public boolean frame(Link l, int type, byte[] payload) {
+        if (payload.length != 5) {
+          return true; // not a call: no reply
+        }
+        return l.serveHere(() -> {
+          try {
+            l.send(LinkTest.frame(7));
+          } catch (IOException e) {
+            throw new UncheckedIOException(e);
+          }
+        });
       }
-    });
+
+      @Override
+      public void closed(Link l, String why) {}
+    };
     link.start(h, watch);
-    byte[][] calls = new byte[burst][];
+    byte[][] calls = new byte[burst + 1][];
     Arrays.fill(calls, frame(5));
+    calls[burst] = frame(1); // the last reply is sent while this frame waits in the buffer
     sendFromFar(calls); // one write: the link reads most of them from its buffer
     DataInputStream replies = new DataInputStream(far.getInputStream());
     far.setSoTimeout(5_000);
