@@ -2,6 +2,7 @@ package dev.trade.bench;
 
 import java.io.File;
 import java.lang.reflect.InvocationTargetException;
+import java.lang.reflect.Method;
 import java.net.MalformedURLException;
 import java.net.URL;
 import java.net.URLClassLoader;
@@ -24,8 +25,10 @@ final class AltTrade {
     }
     ClassLoader loader = new ChildFirst(urls(path), AltTrade.class.getClassLoader());
     try {
-      return (Rpc) Class.forName(TradeRpc.class.getName(), true, loader)
-          .getDeclaredMethod("connect", String.class).invoke(null, address);
+      Method connect = Class.forName(TradeRpc.class.getName(), true, loader)
+          .getDeclaredMethod("connect", String.class);
+      connect.setAccessible(true); // package-private, and in another run-time package here
+      return (Rpc) connect.invoke(null, address);
     } catch (InvocationTargetException e) {
       throw e.getCause() instanceof Exception ex ? ex : e;
     }
