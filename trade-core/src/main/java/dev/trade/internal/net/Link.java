@@ -1,11 +1,9 @@
 package dev.trade.internal.net;
 
-import java.io.BufferedInputStream;
 import java.io.BufferedOutputStream;
 import java.io.DataInputStream;
 import java.io.EOFException;
 import java.io.IOException;
-import java.io.InputStream;
 import java.io.OutputStream;
 import java.net.Socket;
 import java.security.GeneralSecurityException;
@@ -48,7 +46,7 @@ final class Link {
   final boolean initiatedHere;
   private final Socket socket;
   private final DataInputStream in;
-  private final Input input;
+  private final LinkInput input;
   private final OutputStream out;
   private final int maxFrame;
   private final FrameCipher cipher;
@@ -87,7 +85,7 @@ final class Link {
     // 2 x 64 KB per link was 12.7 MB of heap per container. Frames larger than a buffer bypass it
     // (BufferedInput/OutputStream read and write those directly), and 8 KB still coalesces about
     // a hundred small call frames per system call.
-    this.input = new Input(socket.getInputStream());
+    this.input = new LinkInput(socket.getInputStream(), BUFFER);
     this.in = new DataInputStream(input);
     this.out = new BufferedOutputStream(socket.getOutputStream(), BUFFER);
   }
@@ -141,8 +139,10 @@ final class Link {
   }
 
   /**
-   * The watch's look at this link (watch thread only): hands reading on when the reading thread has
-   * served the same call since the last look.
+   * The watch's look at this link (watch thread only). Hands reading on when the reading thread has
+   * served the same call since the last look (a slow call), or serves a call while whole frames
+   * wait behind it (a burst that another core can help with). Either costs one thread wake-up,
+   * at most once per tick.
    *
    * @return whether the link served any call since the last look
    */
@@ -150,7 +150,7 @@ final class Link {
     long stamp = work.get();
     boolean serving = (stamp & 1) == 1;
     boolean changed = stamp != watchSeen;
-    if (serving && !changed) {
+    if (serving && (!changed || input.seemsToHoldWholeFrame())) {
       handOff(stamp);
     }
     watchSeen = stamp;
@@ -379,29 +379,6 @@ final class Link {
       } catch (IOException ignored) {
         // Closing is best effort; the reader notices either way.
       }
-    }
-  }
-
-  /** The link's input buffer, which tells whether the next frame has arrived whole. */
-  private static final class Input extends BufferedInputStream {
-    Input(InputStream in) {
-      super(in, BUFFER);
-    }
-
-    /** Bytes read from the socket and not yet consumed (reading thread only). */
-    int buffered() {
-      return count - pos;
-    }
-
-    /** Whether the next frame, length field included, is in the buffer (reading thread only). */
-    boolean holdsWholeFrame() {
-      int n = count - pos;
-      if (n < 4) {
-        return false;
-      }
-      int length = ((buf[pos] & 0xff) << 24) | ((buf[pos + 1] & 0xff) << 16)
-          | ((buf[pos + 2] & 0xff) << 8) | (buf[pos + 3] & 0xff);
-      return length >= 0 && length <= n - 4;
     }
   }
 
