@@ -9,7 +9,7 @@ package dev.trade.bench;
  * gets a socket per thread (the best case for it); RMI, gRPC, JGroups and TRADE share one client,
  * channel, dispatcher or container, which multiplex or pool connections themselves.
  */
-interface Rpc extends AutoCloseable {
+public interface Rpc extends AutoCloseable {
   boolean small(int x) throws Exception;
 
   int consume(byte[] data) throws Exception;
@@ -35,11 +35,11 @@ interface Rpc extends AutoCloseable {
   final class Service {
     private Service() {}
 
-    static boolean small(int x) {
+    public static boolean small(int x) {
       return (x & 1) == 0;
     }
 
-    static int consume(byte[] data) {
+    public static int consume(byte[] data) {
       return data.length;
     }
   }

@@ -5,6 +5,8 @@ import java.io.ObjectInputFilter;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 
 /**
  * The classes that decoding may load: by name for records, data classes, enums, exceptions,
@@ -53,6 +55,8 @@ public final class AllowList {
 
   /** Copy-on-write: written under {@code this}, read without locking. */
   private volatile List<Pattern> patterns;
+  /** Types whose package {@link #addPackageOf} added: a caller names its return type on every call. */
+  private final Set<Class<?>> packagesAdded = ConcurrentHashMap.newKeySet();
 
   private AllowList(List<Pattern> patterns) {
     this.patterns = List.copyOf(patterns);
@@ -106,6 +110,9 @@ public final class AllowList {
    * for primitive types.
    */
   public void addPackageOf(Class<?> type) {
+    if (!packagesAdded.add(type)) {
+      return; // done before; the patterns only grow
+    }
     while (type.isArray()) {
       type = type.getComponentType();
     }

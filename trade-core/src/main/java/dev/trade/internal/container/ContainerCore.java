@@ -28,7 +28,9 @@ import java.net.InetSocketAddress;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
+import java.util.Map;
 import java.util.UUID;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicInteger;
 
 /**
@@ -40,6 +42,9 @@ import java.util.concurrent.atomic.AtomicInteger;
  */
 public final class ContainerCore implements ServiceCaller {
   private static final AtomicInteger INSTANCES = new AtomicInteger();
+  private static final int MAX_RESOLVED = 1024;
+
+  private record Resolved(ClassLoader loader, Class<?> type) {}
 
   private final UUID uuid = UUID.randomUUID();
   private final String id = uuid.toString();
@@ -55,6 +60,8 @@ public final class ContainerCore implements ServiceCaller {
   private final Limits limits;
   // Written once under this' lock; networking may start later, when discovery is switched on.
   private volatile Network network;
+  /** Declared return types of services called from here, by type name; see declaredReturnType. */
+  private final Map<String, Resolved> returnTypes = new ConcurrentHashMap<>();
   private volatile boolean closed;
 
   /**
@@ -250,7 +257,7 @@ public final class ContainerCore implements ServiceCaller {
       throw LocalInvoker.unavailable(d, "this container has no network");
     }
     ClassLoader loader = callerLoader(returnType);
-    Class<?> declared = Types.resolve(d.returnTypeName(), loader);
+    Class<?> declared = declaredReturnType(d, loader);
     Returns.check(d, returnType, declared);
     // The types the caller's own code names may arrive: the declared return type when this JVM
     // has it, and the requested one. Nothing a remote peer names alone is allowed this way.
@@ -263,6 +270,21 @@ public final class ContainerCore implements ServiceCaller {
           + d.parameterTypeNames().size() + " arguments but got " + normalized.length);
     }
     return Returns.convert(d, returnType, n.call(d, normalized, deadline, loader));
+  }
+
+  /** The service's declared return type as {@code loader} sees it, or null if it cannot. */
+  private Class<?> declaredReturnType(ServiceDescriptor d, ClassLoader loader) {
+    // Class.forName on every call would cost more than the rest of a call's preparation.
+    Resolved r = returnTypes.get(d.returnTypeName());
+    if (r != null && r.loader == loader) {
+      return r.type;
+    }
+    Class<?> type = Types.resolve(d.returnTypeName(), loader);
+    if (returnTypes.size() >= MAX_RESOLVED) {
+      returnTypes.clear(); // names come from peers' tables: bounded, not trusted
+    }
+    returnTypes.put(d.returnTypeName(), new Resolved(loader, type));
+    return type;
   }
 
   private static ClassLoader callerLoader(Class<?> returnType) {

@@ -1,6 +1,5 @@
 package dev.trade.internal.net;
 
-import java.io.BufferedInputStream;
 import java.io.BufferedOutputStream;
 import java.io.DataInputStream;
 import java.io.EOFException;
@@ -11,9 +10,8 @@ import java.security.GeneralSecurityException;
 import java.util.Arrays;
 import java.util.ArrayDeque;
 import java.util.UUID;
-import java.util.concurrent.Executor;
-import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicLong;
 
 /**
  * One authenticated connection to a neighbouring container.
@@ -22,8 +20,10 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * (no thread hand-off on the latency path); senders that arrive while a write is in progress only
  * queue their frame, and the writing thread drains the queue before it flushes, so concurrent calls
  * share system calls. <b>Reading</b> happens on one thread at a time, which hands each frame to the
- * {@link Handler}; the handler may keep that thread for a call and let reading go on in another
- * ({@link #moveReading}).
+ * {@link Handler}. The handler serves a call on that thread ({@link #serveHere}); a {@link ReadWatch}
+ * moves reading to another thread when a call takes longer than a tick. Frames the reading thread
+ * sends while the next frame is already buffered (replies to a burst of calls) wait until it has
+ * served that burst, and then leave with one system call.
  *
  * <p>This class is safe for concurrent use.
  */
@@ -31,18 +31,22 @@ final class Link {
   private static final int BUFFER = 8 * 1024;
   /** Receives what a link reads; called on the thread that is reading the link. */
   interface Handler {
-    void frame(Link link, int type, byte[] payload) throws IOException;
+    /** @return true to go on reading on this thread, false if reading went on in another one */
+    boolean frame(Link link, int type, byte[] payload) throws IOException;
 
     void closed(Link link, String reason);
   }
 
   private static final int READ_CHUNK = 64 * 1024;
+  /** The link whose call the current thread serves on that link's reading thread, if any. */
+  private static final ThreadLocal<Link> SERVING = new ThreadLocal<>();
 
   final UUID peerId;
   final String peerName;
   final boolean initiatedHere;
   private final Socket socket;
   private final DataInputStream in;
+  private final LinkInput input;
   private final OutputStream out;
   private final int maxFrame;
   private final FrameCipher cipher;
@@ -54,9 +58,19 @@ final class Link {
   private boolean writing;
   // Guarded by queue: set when the link is to close once the queued frames are written.
   private String closeWhenDrained;
+  // The reading thread queued frames of its own and must flush them before it blocks.
+  private volatile boolean deferred;
   private Handler handler;
+  private ReadWatch watch;
   // The thread in the read loop; null while reading moves to another one.
   private volatile Thread reader;
+  // Odd while the reading thread serves a call; each call and each hand-off counts one up, so a
+  // stale value never matches a later call.
+  private final AtomicLong work = new AtomicLong();
+  // The thread whose call 'work' counts while it is odd.
+  private volatile Thread worker;
+  // What the watch saw at its last look; read and written by the watch thread only.
+  private long watchSeen;
   volatile long lastReceived = System.nanoTime();
   volatile long lastSent = System.nanoTime();
 
@@ -71,36 +85,85 @@ final class Link {
     // 2 x 64 KB per link was 12.7 MB of heap per container. Frames larger than a buffer bypass it
     // (BufferedInput/OutputStream read and write those directly), and 8 KB still coalesces about
     // a hundred small call frames per system call.
-    this.in = new DataInputStream(new BufferedInputStream(socket.getInputStream(), BUFFER));
+    this.input = new LinkInput(socket.getInputStream(), BUFFER);
+    this.in = new DataInputStream(input);
     this.out = new BufferedOutputStream(socket.getOutputStream(), BUFFER);
   }
 
-  /** Starts the reader thread. */
-  void start(Handler handler) {
+  /** Starts reading on a thread of its own; {@code watch} keeps the link read while calls are served. */
+  void start(Handler handler, ReadWatch watch) {
     this.handler = handler;
+    this.watch = watch;
     Thread t = new Thread(this::readLoop, "trade-reader-" + peerName);
     t.setDaemon(true);
     t.start();
   }
 
   /**
-   * Called by the handler, on the reading thread, for a frame whose work it wants to do on this
-   * thread (a call to serve): reading goes on in a thread of {@code executor} at once, and this
-   * thread leaves the read loop when the handler returns. The work then starts without waking
-   * another thread first; only the next read waits for that wake-up, off the caller's path.
+   * Serves a call on the thread that read it (called by the handler, on the reading thread): the call
+   * runs without another thread waking up first, and its reply can leave with those of the calls
+   * read with it. Should the call take longer than a tick of the {@link ReadWatch}, or wait for a
+   * remote reply ({@link #releaseReading}), reading goes on in another thread meanwhile.
    *
-   * @return false if reading stays here ({@code executor} refused), so the handler hands its work off
+   * @return true if this thread still reads the link, false if reading went on elsewhere (then
+   *     this thread leaves the read loop)
    */
-  boolean moveReading(Executor executor) {
-    reader = null;
-    Thread.currentThread().setName("trade-serving-" + peerName); // no longer this link's reader
+  boolean serveHere(Runnable call) {
+    Thread self = Thread.currentThread();
+    worker = self;
+    long stamp = work.incrementAndGet();
+    watch.serving();
+    SERVING.set(this);
     try {
-      executor.execute(this::readLoop);
-      return true;
-    } catch (RejectedExecutionException closing) {
-      reader = Thread.currentThread();
-      Thread.currentThread().setName("trade-link-" + peerName);
-      return false;
+      call.run();
+    } finally {
+      SERVING.set(null);
+    }
+    return work.compareAndSet(stamp, stamp + 1);
+  }
+
+  /**
+   * Called by a thread that is about to wait for a remote reply: if it is serving a call on a
+   * link's reading thread, reading goes on elsewhere at once, since the reply may come over that very
+   * link.
+   */
+  static void releaseReading() {
+    Link link = SERVING.get();
+    if (link != null) {
+      SERVING.set(null);
+      long stamp = link.work.get();
+      if (link.worker == Thread.currentThread()) {
+        link.handOff(stamp);
+      }
+    }
+  }
+
+  /**
+   * The watch's look at this link (watch thread only). Hands reading on when the reading thread has
+   * served the same call since the last look (a slow call), or serves a call while whole frames
+   * wait behind it (a burst that another core can help with). Either costs one thread wake-up,
+   * at most once per tick.
+   *
+   * @return whether the link served any call since the last look
+   */
+  boolean watch() {
+    long stamp = work.get();
+    boolean serving = (stamp & 1) == 1;
+    boolean changed = stamp != watchSeen;
+    if (serving && (!changed || input.seemsToHoldWholeFrame())) {
+      handOff(stamp);
+    }
+    watchSeen = stamp;
+    return changed || serving;
+  }
+
+  /** Moves reading to another thread if {@code stamp} is still the call being served. */
+  private void handOff(long stamp) {
+    if ((stamp & 1) == 1 && work.compareAndSet(stamp, stamp + 1)) {
+      reader = null;
+      if (!watch.read(this::readLoop)) {
+        close("container closing");
+      }
     }
   }
 
@@ -119,9 +182,34 @@ final class Link {
         queue.add(frame);
         return;
       }
+      if (Thread.currentThread() == reader && input.holdsWholeFrame()) {
+        // A reply to one of a burst of calls: it leaves with the others once the burst is served.
+        queue.add(frame);
+        deferred = true;
+        return;
+      }
       writing = true;
     }
-    byte[] next = frame;
+    drain(frame);
+  }
+
+  /** Writes the frames the reading thread queued of its own (called before it may block). */
+  private void flushDeferred() throws IOException {
+    byte[] first;
+    synchronized (queue) {
+      deferred = false;
+      if (writing || queue.isEmpty()) {
+        return; // a writer is at work and takes them along
+      }
+      writing = true;
+      first = queue.poll();
+    }
+    drain(first);
+  }
+
+  /** Writes {@code first} and whatever is queued meanwhile, then flushes; the caller is the writer. */
+  private void drain(byte[] first) throws IOException {
+    byte[] next = first;
     try {
       while (true) {
         // Sealing here, in write order, keeps the cipher's frame counter in step with the wire.
@@ -175,7 +263,11 @@ final class Link {
     reader = Thread.currentThread();
     String reason = "closed";
     try {
+      flushDeferred(); // frames a reader before this one left queued
       while (!closed.get()) {
+        if (deferred && input.buffered() == 0) {
+          flushDeferred(); // before blocking in read
+        }
         int length;
         try {
           length = in.readInt();
@@ -214,9 +306,8 @@ final class Link {
           break;
         }
         lastReceived = System.nanoTime();
-        handler.frame(this, type, payload);
-        if (reader != Thread.currentThread()) {
-          return; // reading moved on to another thread; this one served a call
+        if (!handler.frame(this, type, payload)) {
+          return; // reading went on in another thread while this one served a call
         }
       }
     } catch (IOException e) {
@@ -256,13 +347,27 @@ final class Link {
 
   /** Closes the link once the frames already handed to {@link #send} are written. */
   void closeAfterSending(String reason) {
+    byte[] first;
     synchronized (queue) {
       if (writing) {
         closeWhenDrained = reason;
         return;
       }
+      first = queue.poll(); // frames the reading thread deferred
+      if (first != null) {
+        closeWhenDrained = reason;
+        writing = true;
+      }
     }
-    close(reason);
+    if (first == null) {
+      close(reason);
+      return;
+    }
+    try {
+      drain(first);
+    } catch (IOException e) {
+      // drain() closed the link.
+    }
   }
 
   /** Closes the socket (which also ends the reader thread); idempotent. */

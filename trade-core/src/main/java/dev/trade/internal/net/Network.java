@@ -55,6 +55,7 @@ public final class Network implements AutoCloseable {
   private final Connector connector;
   private final RemoteCalls calls;
   private final Replication replication;
+  private final ReadWatch readWatch;
   private final Map<UUID, Link> links = new ConcurrentHashMap<>();
   private final Map<InetSocketAddress, UUID> dialled = new ConcurrentHashMap<>();
   // Guarded by this.
@@ -74,7 +75,8 @@ public final class Network implements AutoCloseable {
     this.control = Executors.newSingleThreadExecutor(daemon("trade-control-" + name));
     this.timer = Executors.newSingleThreadScheduledExecutor(daemon("trade-timer-" + name));
     this.workers = Executors.newCachedThreadPool(daemon("trade-worker-" + name));
-    this.calls = new RemoteCalls(self, codec, this::nextHop, provider, workers, timer,
+    this.readWatch = new ReadWatch(links.values(), workers, name);
+    this.calls = new RemoteCalls(self, codec, this::nextHop, provider, timer,
         settings.maxFrameSize());
     this.replication = new Replication(self, registry, tableCodec, links, calls,
         settings.failureTimeout().plus(settings.heartbeatInterval()).toNanos(),
@@ -275,7 +277,7 @@ public final class Network implements AutoCloseable {
       }
       links.put(peer.containerId(), link);
       LOG.log(Level.INFO, "{0}: linked to {1} ({2})", name, peer.name(), socket.getRemoteSocketAddress());
-      link.start(handler);
+      link.start(handler, readWatch);
       replication.linkUp(link);
     });
     if (!accepted) {
@@ -315,7 +317,7 @@ public final class Network implements AutoCloseable {
 
   private final Link.Handler handler = new Link.Handler() {
     @Override
-    public void frame(Link link, int type, byte[] payload) throws IOException {
+    public boolean frame(Link link, int type, byte[] payload) throws IOException {
       switch (type) {
         case Wire.CALL:
         case Wire.REPLY:
@@ -323,10 +325,9 @@ public final class Network implements AutoCloseable {
             throw new IOException("short frame of type " + type);
           }
           if (type == Wire.CALL) {
-            calls.onCall(link, payload);
-          } else {
-            calls.onReply(payload);
+            return calls.onCall(link, payload);
           }
+          calls.onReply(payload);
           break;
         case Wire.PING:
           break;
@@ -342,6 +343,7 @@ public final class Network implements AutoCloseable {
         default:
           throw new IOException("unknown frame type " + type);
       }
+      return true;
     }
 
     @Override
@@ -384,6 +386,7 @@ public final class Network implements AutoCloseable {
       }
     }
     calls.failAll("container " + name + " closed");
+    readWatch.close();
     control.shutdown();
     timer.shutdownNow();
     workers.shutdownNow();

@@ -86,7 +86,7 @@ class FrameExamplesTest {
     List<LocalService> services = registry.register(new RobotArm(), List.of());
     ServiceDescriptor d = services.get(0).descriptor();
     assertEquals("openGripper(int)", d.signature());
-    RemoteCalls hub = new RemoteCalls(HUB, codec(), null, null, null, null, 1 << 26);
+    RemoteCalls hub = new RemoteCalls(HUB, codec(), null, null, null, 1 << 26);
     return hub.callFrame(ARM, 1, d.serviceId(), 30_000, Arguments.normalize(d, new Object[] {3}));
   }
 
@@ -94,7 +94,7 @@ class FrameExamplesTest {
   private static byte[] replyFrame() throws Exception {
     byte[] call = callFrame();
     byte[] payload = Arrays.copyOfRange(call, Wire.HEADER, call.length);
-    RemoteCalls arm = new RemoteCalls(ARM, codec(), null, null, null, null, 1 << 26);
+    RemoteCalls arm = new RemoteCalls(ARM, codec(), null, null, null, 1 << 26);
     ByteSink out = arm.replyStart(payload, Wire.OK);
     codec().write(Boolean.TRUE, out);
     return Frames.finish(out);

@@ -39,7 +39,7 @@ class FreshLinkTest {
         Handshake.Peer provider = p.handshake("early");
         // No LINKS from us at all: the provider cannot route to us, only answer over the link.
         Codec codec = new Codec(AllowList.withDefaults(), Limits.DEFAULT, InfoBinding.NONE);
-        RemoteCalls us = new RemoteCalls(p.id, codec, null, null, null, null, 1 << 20);
+        RemoteCalls us = new RemoteCalls(p.id, codec, null, null, null, 1 << 20);
         p.send(us.callFrame(provider.containerId(), 7, 1, 5_000, new Object[] {3}));
         long deadline = System.nanoTime() + Duration.ofSeconds(5).toNanos();
         byte[] frame;

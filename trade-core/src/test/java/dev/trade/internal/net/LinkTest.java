@@ -3,24 +3,41 @@ package dev.trade.internal.net;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import dev.trade.internal.codec.ByteSink;
+import java.io.DataInputStream;
 import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
+import java.util.Arrays;
 import java.util.List;
 import java.util.UUID;
+import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
-/** A link reports why it was closed: the first reason given to close(), not a generic "closed". */
+/**
+ * A link reports why it was closed (the first reason given to close(), not a generic "closed"); it
+ * goes on being read while its reading thread serves a long call; a served call that waits for a
+ * remote reply lets reading go on at once; replies sent during a burst of calls all leave.
+ */
 class LinkTest {
   private ServerSocket server;
   private Socket near;
   private Socket far;
+  private final ExecutorService workers = Executors.newCachedThreadPool();
+  private final ReadWatch watch = new ReadWatch(List.of(), workers, "test");
 
   @BeforeEach
   void connect() throws IOException {
@@ -35,6 +52,8 @@ class LinkTest {
     near.close();
     far.close();
     server.close();
+    watch.close();
+    workers.shutdownNow();
   }
 
   private static Handshake.Peer peer(String name) {
@@ -46,10 +65,11 @@ class LinkTest {
     final CompletableFuture<String> reason = new CompletableFuture<>();
 
     @Override
-    public void frame(Link link, int type, byte[] payload) {
+    public boolean frame(Link link, int type, byte[] payload) {
       if (type == Wire.GOODBYE) {
         link.close("said goodbye");
       }
+      return true;
     }
 
     @Override
@@ -62,7 +82,7 @@ class LinkTest {
   void aLinkClosedHereReportsTheReasonGiven() throws Exception {
     Link link = new Link(near, peer("C"), true, 1 << 20);
     Recorder r = new Recorder();
-    link.start(r);
+    link.start(r, watch);
     link.close("silent for 3012 ms (FAILURETIMEOUT=3000)");
     assertEquals("silent for 3012 ms (FAILURETIMEOUT=3000)", r.reason.get(5, TimeUnit.SECONDS));
     assertTrue(link.isClosed());
@@ -72,7 +92,7 @@ class LinkTest {
   void aLinkClosedByItsHandlerReportsThatReason() throws Exception {
     Link link = new Link(near, peer("C"), true, 1 << 20);
     Recorder r = new Recorder();
-    link.start(r);
+    link.start(r, watch);
     far.getOutputStream().write(Frames.finish(Frames.start(Wire.GOODBYE, 0)));
     far.getOutputStream().flush();
     assertEquals("said goodbye", r.reason.get(5, TimeUnit.SECONDS));
@@ -82,7 +102,7 @@ class LinkTest {
   void aLinkClosedByThePeerSaysSo() throws Exception {
     Link link = new Link(near, peer("C"), true, 1 << 20);
     Recorder r = new Recorder();
-    link.start(r);
+    link.start(r, watch);
     far.close();
     assertEquals("connection closed by C", r.reason.get(5, TimeUnit.SECONDS));
   }
@@ -93,7 +113,126 @@ class LinkTest {
     Recorder r = new Recorder();
     link.close("duplicate link");
     link.close("container closing");
-    link.start(r);
+    link.start(r, watch);
     assertEquals("duplicate link", r.reason.get(5, TimeUnit.SECONDS));
+  }
+
+  /** A handler that serves every frame on the reading thread with {@code work} and records frames. */
+  private static final class Serving implements Link.Handler {
+    final BlockingQueue<Integer> seen = new LinkedBlockingQueue<>();
+    final Consumer<Link> work;
+
+    Serving(Consumer<Link> work) {
+      this.work = work;
+    }
+
+    @Override
+    public boolean frame(Link link, int type, byte[] payload) {
+      seen.add(payload.length);
+      return link.serveHere(() -> work.accept(link));
+    }
+
+    @Override
+    public void closed(Link link, String why) {}
+  }
+
+  /** A frame whose payload length tells frames apart. */
+  private static byte[] frame(int n) {
+    ByteSink out = Frames.start(Wire.PING, n);
+    out.writeBytes(new byte[n], 0, n);
+    return Frames.finish(out);
+  }
+
+  private void sendFromFar(byte[]... frames) throws IOException {
+    for (byte[] f : frames) {
+      far.getOutputStream().write(f);
+    }
+    far.getOutputStream().flush();
+  }
+
+  @Test
+  void aLongCallOnTheReadingThreadDoesNotStopReading() throws Exception {
+    CountDownLatch release = new CountDownLatch(1);
+    List<Link> watched = new CopyOnWriteArrayList<>();
+    try (ReadWatch watching = new ReadWatch(watched, workers, "watching")) {
+      Link link = new Link(near, peer("C"), true, 1 << 20);
+      watched.add(link);
+      Serving h = new Serving(l -> {
+        try {
+          release.await();
+        } catch (InterruptedException e) {
+          Thread.currentThread().interrupt();
+        }
+      });
+      link.start(h, watching);
+      sendFromFar(frame(1));
+      assertEquals(1, h.seen.poll(5, TimeUnit.SECONDS));
+      sendFromFar(frame(2)); // read while the first call still blocks its thread
+      assertEquals(2, h.seen.poll(5, TimeUnit.SECONDS));
+      assertEquals(1, release.getCount(), "the first call is still being served");
+      release.countDown();
+      sendFromFar(frame(3));
+      assertEquals(3, h.seen.poll(5, TimeUnit.SECONDS));
+      link.close("done");
+    }
+  }
+
+  @Test
+  void aServedCallThatWaitsForAReplyLetsReadingGoOnAtOnce() throws Exception {
+    // The watch here never looks at this link: only releaseReading() can hand reading on.
+    CountDownLatch release = new CountDownLatch(1);
+    Link link = new Link(near, peer("C"), true, 1 << 20);
+    Serving h = new Serving(l -> {
+      Link.releaseReading();
+      try {
+        release.await();
+      } catch (InterruptedException e) {
+        Thread.currentThread().interrupt();
+      }
+    });
+    link.start(h, watch);
+    sendFromFar(frame(1));
+    assertEquals(1, h.seen.poll(5, TimeUnit.SECONDS));
+    sendFromFar(frame(2));
+    assertEquals(2, h.seen.poll(5, TimeUnit.SECONDS));
+    release.countDown();
+    link.close("done");
+  }
+
+  @Test
+  void repliesToABurstOfCallsAllLeave() throws Exception {
+    int burst = 200;
+    Link link = new Link(near, peer("C"), true, 1 << 20);
+    Link.Handler h = new Link.Handler() {
+      @Override
+      public boolean frame(Link l, int type, byte[] payload) {
+        if (payload.length != 5) {
+          return true; // not a call: no reply
+        }
+        return l.serveHere(() -> {
+          try {
+            l.send(LinkTest.frame(7));
+          } catch (IOException e) {
+            throw new UncheckedIOException(e);
+          }
+        });
+      }
+
+      @Override
+      public void closed(Link l, String why) {}
+    };
+    link.start(h, watch);
+    byte[][] calls = new byte[burst + 1][];
+    Arrays.fill(calls, frame(5));
+    calls[burst] = frame(1); // the last reply is sent while this frame waits in the buffer
+    sendFromFar(calls); // one write: the link reads most of them from its buffer
+    DataInputStream replies = new DataInputStream(far.getInputStream());
+    far.setSoTimeout(5_000);
+    for (int i = 0; i < burst; i++) {
+      int length = replies.readInt();
+      replies.readFully(new byte[length]);
+      assertEquals(2 + 7, length, "reply " + i);
+    }
+    link.close("done");
   }
 }

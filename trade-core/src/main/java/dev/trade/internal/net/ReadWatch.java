@@ -1,0 +1,103 @@
+package dev.trade.internal.net;
+
+import java.util.Collection;
+import java.util.concurrent.Executor;
+import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.LockSupport;
+
+/**
+ * Keeps every link read while calls are served on the threads that read them.
+ *
+ * <p>A link's reading thread serves a call itself (see {@link Link#serveHere}): no other thread has
+ * to wake up before the call runs or after it, which is most of a small call's cost. While it
+ * serves, nobody reads that link. This watch looks at the links once per tick (about a
+ * millisecond) and, when a link's thread has been serving the same call for a whole tick, hands
+ * reading to a thread of the executor; the serving thread leaves the read loop when its call ends.
+ * So a slow or blocked service delays the frames behind it on its link by one to two ticks, never
+ * its heartbeats by more, and fast calls never pay for a hand-off. The same thing happens at once
+ * when a served call itself waits for a remote reply ({@link Link#releaseReading}).
+ *
+ * <p>The watch ticks only while calls are being served: after a stretch without any, it parks
+ * until the next one starts, so idle containers (and a hundred of them on one host) cost nothing.
+ * Safe for concurrent use.
+ */
+final class ReadWatch implements AutoCloseable {
+  private static final long TICK_NANOS = TimeUnit.MILLISECONDS.toNanos(1);
+  /** Ticks without any served call before the watch parks (about 0.2 s). */
+  private static final int IDLE_TICKS = 200;
+
+  private final Collection<Link> links;
+  private final Executor executor;
+  private final Thread thread;
+  private volatile boolean parked;
+  private volatile boolean closed;
+
+  /**
+   * @param links the live links, looked at on every tick
+   * @param executor runs a link's read loop when reading is handed on
+   */
+  ReadWatch(Collection<Link> links, Executor executor, String name) {
+    this.links = links;
+    this.executor = executor;
+    this.thread = new Thread(this::run, "trade-readwatch-" + name);
+    thread.setDaemon(true);
+    thread.start();
+  }
+
+  /** Called by a link's reading thread as it starts serving a call: wakes the watch if it sleeps. */
+  void serving() {
+    if (parked) {
+      LockSupport.unpark(thread);
+    }
+  }
+
+  /**
+   * Runs {@code link}'s read loop on a thread of the executor.
+   *
+   * @return false if the executor refused (the container is closing)
+   */
+  boolean read(Runnable readLoop) {
+    try {
+      executor.execute(readLoop);
+      return true;
+    } catch (RejectedExecutionException closing) {
+      return false;
+    }
+  }
+
+  private void run() {
+    int idle = IDLE_TICKS; // nothing to watch before the first call
+    while (!closed) {
+      if (tick()) {
+        idle = 0;
+      } else if (++idle >= IDLE_TICKS) {
+        parked = true;
+        // A call that started before 'parked' was set found it false and did not wake us: look once
+        // more before sleeping. One that starts after sees it true and unparks us.
+        if (!tick() && !closed) {
+          LockSupport.park(this);
+        }
+        parked = false;
+        idle = 0;
+        continue;
+      }
+      LockSupport.parkNanos(this, TICK_NANOS);
+    }
+  }
+
+  /** One look at every link; true if any served a call since the last look. */
+  private boolean tick() {
+    boolean busy = false;
+    for (Link l : links) {
+      busy |= l.watch();
+    }
+    return busy;
+  }
+
+  @Override
+  public void close() {
+    closed = true;
+    LockSupport.unpark(thread);
+  }
+}
