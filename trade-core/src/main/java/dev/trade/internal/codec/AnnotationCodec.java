@@ -8,9 +8,10 @@ import java.lang.invoke.MethodType;
 import java.lang.reflect.Method;
 import java.lang.reflect.Modifier;
 import java.lang.reflect.Proxy;
-import java.util.Arrays;
+import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashMap;
+import java.util.List;
 import java.util.Map;
 
 /**
@@ -111,11 +112,17 @@ final class AnnotationCodec {
       Method[] methods;
       String trouble = type.isAnnotation() ? null : "it is not an annotation type";
       try {
-        methods = Arrays.stream(type.getDeclaredMethods())
-            .filter(m -> !Modifier.isStatic(m.getModifiers()) && m.getParameterCount() == 0
-                && !m.isSynthetic())
-            .sorted(Comparator.comparing(Method::getName))
-            .toArray(Method[]::new);
+        // A loop, not a stream: the first service table a container sends encodes an annotation,
+        // and a sorted stream would load some 30 classes for it.
+        List<Method> members = new ArrayList<>();
+        for (Method m : type.getDeclaredMethods()) {
+          if (!Modifier.isStatic(m.getModifiers()) && m.getParameterCount() == 0
+              && !m.isSynthetic()) {
+            members.add(m);
+          }
+        }
+        members.sort(Comparator.comparing(Method::getName));
+        methods = members.toArray(new Method[0]);
       } catch (RuntimeException | LinkageError e) { // a member type is missing here
         methods = new Method[0];
         trouble = "its members cannot be read (" + e + ")";

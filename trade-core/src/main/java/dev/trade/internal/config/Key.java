@@ -1,13 +1,10 @@
 package dev.trade.internal.config;
 
-import java.util.Arrays;
 import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
-import java.util.function.Function;
-import java.util.stream.Collectors;
 
 /**
  * Every configuration key, in canonical order, with its default and how its value is parsed.
@@ -17,48 +14,51 @@ import java.util.stream.Collectors;
  * shipped {@code config/trade.properties} and {@code docs/configuration.md} follow it.
  */
 enum Key {
-  CONTAINERNAME("", Values::containerName, Values::plain),
-  STARTDISCOVERY("false", Values::bool, Values::plain),
-  STARTBROADCAST("false", Values::bool, Values::plain),
-  MCAST_ADDR("230.1.1.1", Values::multicast, Values::hostAddress),
-  BROADCASTPORT("33333", Values.integer("port", 1, 65535), Values::plain),
-  BROADCASTINTERVAL("3000", Values.millis(1), Values::millisText),
-  DISCOVERYTIMEOUT("3000", Values.millis(0), Values::millisText),
-  CALLCONTAINERDISCOVERYTIMEOUT("3000", Values.millis(0), Values::millisText),
-  STARTACCEPTINGCONNECTIONS("false", Values::bool, Values::plain),
-  SERVERIPS("", Values::listenAddresses, Values::commaList),
-  CONNECTCONTAINERS("", Values::connectAddresses, Values::commaList),
-  SCANFORSERVER("true", Values::bool, Values::plain),
-  TIMEOUT_CLIENT_SOCKET("3000", Values.millis(1), Values::millisText),
-  CALLCHECKTIME("5000", Values.millis(1), Values::millisText),
-  USEENCRYPTION("false", Values::bool, Values::plain),
-  CREDENTIALS("diarcUser", Values::text, Values::plain),
-  TRADESYSID("diarc", Values::systemId, Values::plain),
-  COPYDATAFORLOCALINVOKES("false", Values::bool, Values::plain),
-  CALLTIMEOUT("30000", Values.millis(1), Values::millisText),
-  HEARTBEATINTERVAL("250", Values.millis(1), Values::millisText),
-  FAILURETIMEOUT("3000", Values.millis(1), Values::millisText),
-  DISCOVERYRANGE("localhost", Values::discoveryRange, Values::plain),
-  DISCOVERYINTERFACES("", Values::interfaces, Values::commaList),
-  SERIALIZATIONALLOWLIST("", Values::allowList, Values::semicolonList),
-  MAXFRAMESIZE("67108864", Values.integer("size in bytes", 1024, Integer.MAX_VALUE - 8),
-      Values::plain);
+  CONTAINERNAME("", ValueType.CONTAINER_NAME),
+  STARTDISCOVERY("false", ValueType.BOOL),
+  STARTBROADCAST("false", ValueType.BOOL),
+  MCAST_ADDR("230.1.1.1", ValueType.MULTICAST),
+  BROADCASTPORT("33333", ValueType.PORT),
+  BROADCASTINTERVAL("3000", ValueType.MILLIS),
+  DISCOVERYTIMEOUT("3000", ValueType.MILLIS_OR_ZERO),
+  CALLCONTAINERDISCOVERYTIMEOUT("3000", ValueType.MILLIS_OR_ZERO),
+  STARTACCEPTINGCONNECTIONS("false", ValueType.BOOL),
+  SERVERIPS("", ValueType.LISTEN_ADDRESSES),
+  CONNECTCONTAINERS("", ValueType.CONNECT_ADDRESSES),
+  SCANFORSERVER("true", ValueType.BOOL),
+  TIMEOUT_CLIENT_SOCKET("3000", ValueType.MILLIS),
+  CALLCHECKTIME("5000", ValueType.MILLIS),
+  USEENCRYPTION("false", ValueType.BOOL),
+  CREDENTIALS("diarcUser", ValueType.TEXT),
+  TRADESYSID("diarc", ValueType.SYSTEM_ID),
+  COPYDATAFORLOCALINVOKES("false", ValueType.BOOL),
+  CALLTIMEOUT("30000", ValueType.MILLIS),
+  HEARTBEATINTERVAL("250", ValueType.MILLIS),
+  FAILURETIMEOUT("3000", ValueType.MILLIS),
+  DISCOVERYRANGE("localhost", ValueType.DISCOVERY_RANGE),
+  DISCOVERYINTERFACES("", ValueType.INTERFACES),
+  SERIALIZATIONALLOWLIST("", ValueType.ALLOW_LIST),
+  MAXFRAMESIZE("67108864", ValueType.FRAME_SIZE);
 
   /** Keys TRADE used to read that are accepted and ignored, so that old files still load. */
   static final Set<String> LEGACY = Set.of("RUNWEBSERVER");
 
-  private static final Map<String, Key> BY_NAME = Collections.unmodifiableMap(
-      Arrays.stream(values()).collect(Collectors.toMap(
-          Key::name, k -> k, (a, b) -> a, LinkedHashMap::new)));
+  private static final Map<String, Key> BY_NAME = byName();
 
   private final String defaultText;
-  private final Function<String, ?> parser;
-  private final Function<Object, String> formatter;
+  private final ValueType type;
 
-  Key(String defaultText, Function<String, ?> parser, Function<Object, String> formatter) {
+  Key(String defaultText, ValueType type) {
     this.defaultText = defaultText;
-    this.parser = parser;
-    this.formatter = formatter;
+    this.type = type;
+  }
+
+  private static Map<String, Key> byName() {
+    Map<String, Key> map = new LinkedHashMap<>();
+    for (Key k : values()) {
+      map.put(k.name(), k);
+    }
+    return Collections.unmodifiableMap(map);
   }
 
   /**
@@ -86,7 +86,7 @@ enum Key {
       s = defaultText; // defaults are valid: Settings parses them all when it is loaded
     }
     try {
-      return parser.apply(s);
+      return type.parse(s);
     } catch (IllegalArgumentException e) {
       String shown = this == CREDENTIALS ? "****" : s;
       throw new IllegalArgumentException(name() + "=" + shown + ": " + e.getMessage());
@@ -95,7 +95,7 @@ enum Key {
 
   /** The canonical text for a value of this key; {@link #parse} accepts it again. */
   String format(Object value) {
-    return formatter.apply(value);
+    return type.format(value);
   }
 
   private static String unknownKeyMessage(String name) {

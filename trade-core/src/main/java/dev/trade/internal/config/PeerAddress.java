@@ -84,6 +84,9 @@ public record PeerAddress(String host, int port) {
    */
   public static List<PeerAddress> parseList(String text) {
     Objects.requireNonNull(text, "text == null");
+    if (text.isBlank()) {
+      return List.of(); // the default of both keys: no need to compile the separator pattern
+    }
     Set<PeerAddress> result = new LinkedHashSet<>();
     for (String entry : text.split("[,;\\s]+")) {
       if (!entry.isEmpty()) {
@@ -109,11 +112,20 @@ public record PeerAddress(String host, int port) {
 
   /** Parses 0..65535 written in decimal digits only, or returns -1. */
   private static int parsePort(String s) {
-    if (s.isEmpty() || s.length() > 5 || !s.chars().allMatch(c -> c >= '0' && c <= '9')) {
+    if (s.isEmpty() || s.length() > 5 || !isDigits(s)) {
       return -1;
     }
     int port = Integer.parseInt(s);
     return port <= 65535 ? port : -1;
+  }
+
+  private static boolean isDigits(String s) {
+    for (int i = 0; i < s.length(); i++) {
+      if (s.charAt(i) < '0' || s.charAt(i) > '9') {
+        return false;
+      }
+    }
+    return true;
   }
 
   private static IllegalArgumentException bad(String entry, String expected) {

@@ -43,7 +43,6 @@ public final class Settings {
   /** Class-path resource checked third by {@link #load()}. */
   public static final String RESOURCE = "trade.properties";
 
-  private static final System.Logger LOG = System.getLogger(Settings.class.getName());
   private static final Settings DEFAULTS = new Settings(parsedDefaults());
 
   /** Never modified after construction, never handed out. */
@@ -323,7 +322,10 @@ public final class Settings {
   }
 
   private static void ignoreLegacy(String key) {
-    LOG.log(Level.DEBUG, "ignoring {0}: TRADE no longer reads this key", key);
+    // Looked up here, not held in a static field: the first logger of a JVM costs tens of ms
+    // (the logging backend is found and set up), and most settings never need one.
+    System.getLogger(Settings.class.getName())
+        .log(Level.DEBUG, "ignoring {0}: TRADE no longer reads this key", key);
   }
 
   private static EnumMap<Key, Object> parsedDefaults() {

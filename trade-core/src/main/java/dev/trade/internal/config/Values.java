@@ -6,9 +6,8 @@ import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
-import java.util.function.Function;
+import java.util.StringJoiner;
 import java.util.regex.Pattern;
-import java.util.stream.Collectors;
 
 /**
  * Parsers and formatters for each kind of setting value.
@@ -22,17 +21,23 @@ final class Values {
   /** Largest millisecond count: fits the {@code int} timeouts of the socket API. */
   static final long MAX_MILLIS = Integer.MAX_VALUE;
 
-  private static final String IDENT = "\\p{javaJavaIdentifierStart}\\p{javaJavaIdentifierPart}*";
-  private static final String QUALIFIED = IDENT + "(\\." + IDENT + ")*";
-  // ObjectInputFilter class patterns: [module/]name, name.*, name.**, or name*.
-  private static final Pattern CLASS_PATTERN =
-      Pattern.compile("(" + QUALIFIED + "/)?" + QUALIFIED + "(\\.\\*\\*?|\\*)?");
-  private static final Pattern INTERFACE_NAME = Pattern.compile("[^\\p{Cntrl}\\s,;/]+");
-
   private Values() {}
 
+  /**
+   * Patterns needed only for keys that are rarely set (their defaults are empty), compiled on
+   * first use rather than with the defaults that every container parses.
+   */
+  private static final class Patterns {
+    static final String IDENT = "\\p{javaJavaIdentifierStart}\\p{javaJavaIdentifierPart}*";
+    static final String QUALIFIED = IDENT + "(\\." + IDENT + ")*";
+    // ObjectInputFilter class patterns: [module/]name, name.*, name.**, or name*.
+    static final Pattern CLASS_PATTERN =
+        Pattern.compile("(" + QUALIFIED + "/)?" + QUALIFIED + "(\\.\\*\\*?|\\*)?");
+    static final Pattern INTERFACE_NAME = Pattern.compile("[^\\p{Cntrl}\\s,;/]+");
+  }
+
   static Object text(String s) {
-    if (s.chars().anyMatch(Character::isISOControl)) {
+    if (hasControl(s)) {
       throw expected("text without control characters");
     }
     return s;
@@ -50,7 +55,7 @@ final class Values {
 
   private static Object bounded(String s, int min, int max, String what) {
     int bytes = s.getBytes(java.nio.charset.StandardCharsets.UTF_8).length;
-    if (bytes < min || bytes > max || s.chars().anyMatch(Character::isISOControl)) {
+    if (bytes < min || bytes > max || hasControl(s)) {
       throw expected(what);
     }
     return s;
@@ -67,26 +72,31 @@ final class Values {
     throw expected("true or false");
   }
 
-  /** Decimal integers from {@code min} to {@code max}, described as "a {what} min..max". */
-  static Function<String, Object> integer(String what, int min, int max) {
-    return s -> {
-      long n = parseLong(s);
-      if (n < min || n > max) {
-        throw expected("a " + what + " " + min + ".." + max);
+  private static boolean hasControl(String s) {
+    for (int i = 0; i < s.length(); i++) {
+      if (Character.isISOControl(s.charAt(i))) {
+        return true;
       }
-      return (int) n;
-    };
+    }
+    return false;
+  }
+
+  /** Decimal integers from {@code min} to {@code max}, described as "a {what} min..max". */
+  static Object integer(String s, String what, int min, int max) {
+    long n = parseLong(s);
+    if (n < min || n > max) {
+      throw expected("a " + what + " " + min + ".." + max);
+    }
+    return (int) n;
   }
 
   /** Whole milliseconds from {@code min} to {@link #MAX_MILLIS}, as a {@link Duration}. */
-  static Function<String, Object> millis(long min) {
-    return s -> {
-      long n = parseLong(s);
-      if (n < min || n > MAX_MILLIS) {
-        throw expected("a duration in milliseconds " + min + ".." + MAX_MILLIS);
-      }
-      return Duration.ofMillis(n);
-    };
+  static Object millis(String s, long min) {
+    long n = parseLong(s);
+    if (n < min || n > MAX_MILLIS) {
+      throw expected("a duration in milliseconds " + min + ".." + MAX_MILLIS);
+    }
+    return Duration.ofMillis(n);
   }
 
   static Object multicast(String s) {
@@ -125,12 +135,15 @@ final class Values {
 
   /** Interface names separated by commas or white space; duplicates dropped, order kept. */
   static Object interfaces(String s) {
+    if (s.isBlank()) {
+      return List.of(); // the default: no need to compile the separator pattern
+    }
     Set<String> names = new LinkedHashSet<>();
     for (String name : s.split("[,\\s]+")) {
       if (name.isEmpty()) {
         continue; // blank text, or a leading separator
       }
-      if (!INTERFACE_NAME.matcher(name).matches()) {
+      if (!Patterns.INTERFACE_NAME.matcher(name).matches()) {
         throw expected("network interface names separated by commas or spaces, e.g. eth0,wlan0");
       }
       names.add(name);
@@ -150,7 +163,7 @@ final class Values {
       if (pattern.isEmpty()) {
         continue; // a trailing ';' is harmless
       }
-      if (!CLASS_PATTERN.matcher(pattern).matches()) {
+      if (!Patterns.CLASS_PATTERN.matcher(pattern).matches()) {
         throw new IllegalArgumentException("'" + pattern + "': expected ';'-separated class"
             + " patterns such as com.example.Dto;com.example.model.*;com.example.**");
       }
@@ -161,10 +174,6 @@ final class Values {
     return List.copyOf(patterns);
   }
 
-  static String plain(Object value) {
-    return String.valueOf(value);
-  }
-
   static String millisText(Object value) {
     return Long.toString(((Duration) value).toMillis());
   }
@@ -173,12 +182,13 @@ final class Values {
     return ((InetAddress) value).getHostAddress();
   }
 
-  static String commaList(Object value) {
-    return ((List<?>) value).stream().map(String::valueOf).collect(Collectors.joining(","));
-  }
-
-  static String semicolonList(Object value) {
-    return ((List<?>) value).stream().map(String::valueOf).collect(Collectors.joining(";"));
+  /** The elements of a list value, separated by {@code separator}. */
+  static String joined(Object value, String separator) {
+    StringJoiner joiner = new StringJoiner(separator);
+    for (Object element : (List<?>) value) {
+      joiner.add(String.valueOf(element));
+    }
+    return joiner.toString();
   }
 
   /** Parses digits (with an optional sign) as a long, or returns {@link Long#MIN_VALUE}. */

@@ -36,10 +36,17 @@ public final class Registry {
     void changed(List<Entry> added, List<Entry> removed);
   }
 
-  private static final Comparator<Entry> PREFERENCE =
-      Comparator.comparingInt(Entry::distance)
-          .thenComparing(e -> e.descriptor().containerId())
-          .thenComparingLong(e -> e.descriptor().serviceId());
+  /** By distance, then container id, then service id. */
+  private static final Comparator<Entry> PREFERENCE = new Comparator<>() {
+    @Override
+    public int compare(Entry a, Entry b) {
+      int c = Integer.compare(a.distance(), b.distance());
+      if (c == 0) {
+        c = a.descriptor().containerId().compareTo(b.descriptor().containerId());
+      }
+      return c != 0 ? c : Long.compare(a.descriptor().serviceId(), b.descriptor().serviceId());
+    }
+  };
 
   private final String containerId;
   private final String containerName;
@@ -359,22 +366,55 @@ public final class Registry {
     return provider.getClass().getName() + "@" + Integer.toHexString(System.identityHashCode(provider));
   }
 
-  private record Key(String containerId, long serviceId) {}
+  /**
+   * A service's identity as a map key. A class rather than a record: a record's equals and
+   * hashCode are generated at run time on first use, which costs a starting container about 20
+   * method-handle classes (see docs/benchmarks.md, "Start → callable").
+   */
+  private static final class Key {
+    private final String containerId;
+    private final long serviceId;
+
+    Key(String containerId, long serviceId) {
+      this.containerId = containerId;
+      this.serviceId = serviceId;
+    }
+
+    @Override
+    public boolean equals(Object o) {
+      return o instanceof Key && ((Key) o).serviceId == serviceId
+          && ((Key) o).containerId.equals(containerId);
+    }
+
+    @Override
+    public int hashCode() {
+      return 31 * containerId.hashCode() + Long.hashCode(serviceId);
+    }
+  }
 
   private record Snapshot(List<Entry> ordered, Map<String, List<Entry>> byName, Map<Key, Entry> byKey) {
     static final Snapshot EMPTY = new Snapshot(List.of(), Map.of(), Map.of());
 
     static Snapshot of(Map<String, Map<Long, Entry>> tables) {
       List<Entry> all = new ArrayList<>();
-      tables.values().forEach(t -> all.addAll(t.values()));
+      for (Map<Long, Entry> t : tables.values()) {
+        all.addAll(t.values());
+      }
       all.sort(PREFERENCE);
       Map<String, List<Entry>> byName = new HashMap<>();
       Map<Key, Entry> byKey = new HashMap<>();
       for (Entry e : all) {
-        byName.computeIfAbsent(e.descriptor().name(), k -> new ArrayList<>()).add(e);
+        List<Entry> named = byName.get(e.descriptor().name());
+        if (named == null) {
+          named = new ArrayList<>();
+          byName.put(e.descriptor().name(), named);
+        }
+        named.add(e);
         byKey.put(new Key(e.descriptor().containerId(), e.descriptor().serviceId()), e);
       }
-      byName.replaceAll((k, v) -> List.copyOf(v));
+      for (Map.Entry<String, List<Entry>> e : byName.entrySet()) {
+        e.setValue(List.copyOf(e.getValue()));
+      }
       return new Snapshot(List.copyOf(all), Map.copyOf(byName), Map.copyOf(byKey));
     }
   }
