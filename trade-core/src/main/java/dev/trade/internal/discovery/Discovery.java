@@ -107,12 +107,14 @@ public final class Discovery implements AutoCloseable {
     this.receiver = new Receiver(receiveChannel, b.systemId, b.containerId, key, b.listener,
         announcer::answer, b.observer, b.maxClockSkew, b.reportInterval, b.discovery,
         "trade-discovery-receive" + tag);
+    receiver.start();
+    announcer.start(b.interval);
+    // Logged after starting: the first log line of a JVM sets up its logging (tens of ms), which the
+    // announcer's own start-up (its MAC) can overlap on another core.
     LOG.log(Level.INFO, "Discovery of ''{0}'' in system ''{1}'' on {2} via {3} ({4}, TTL {5}):"
         + " announcing {6}, listening {7}", b.containerName, b.systemId,
         Announcement.format(target), interfaceNames(), b.range, b.range.ttl, b.broadcast,
         b.discovery);
-    receiver.start();
-    announcer.start(b.interval);
   }
 
   /** A builder; see {@link Builder} for what is required and the defaults. */

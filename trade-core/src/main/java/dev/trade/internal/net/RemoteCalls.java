@@ -362,21 +362,30 @@ final class RemoteCalls {
   }
 
   /**
-   * Sends a reply to its caller: straight back over the link the call came in on when the caller
-   * is that neighbour (a call can overtake the caller's link state, so a new neighbour's first
-   * calls may find no route yet), else along the route.
+   * Sends a reply to its caller: along the route, or straight back over the link the call came in
+   * on when the caller is that neighbour or the route is missing or broken. A call can overtake
+   * link states (a new neighbour's first calls, calls along a path that just formed or around one
+   * that just broke), and the neighbour it came from knows the way back: it just forwarded it.
    */
   private void sendReply(Link from, byte[] call, byte[] frame) {
     UUID caller = Frames.source(call);
-    if (from != null && from.peerId.equals(caller) && !from.isClosed()) {
-      try {
-        from.send(frame);
-        return;
-      } catch (IOException e) {
-        // That link just failed: try whatever route remains.
-      }
+    Link route = from != null && from.peerId.equals(caller) ? from : router.nextHop(caller);
+    if (!sent(route, frame) && (route == from || !sent(from, frame))) {
+      deliver(caller, frame, 0); // both failed just now: wait for routes to settle
     }
-    deliver(caller, frame, 0);
+  }
+
+  /** Sends over {@code link} if it is there and open; false if not or if the write failed. */
+  private static boolean sent(Link link, byte[] frame) {
+    if (link == null || link.isClosed()) {
+      return false;
+    }
+    try {
+      link.send(frame);
+      return true;
+    } catch (IOException e) {
+      return false;
+    }
   }
 
   /**

@@ -12,12 +12,14 @@ import dev.trade.internal.codec.Limits;
 import java.net.InetSocketAddress;
 import java.time.Duration;
 import java.util.Arrays;
+import java.util.UUID;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
 /**
  * Calls are served on the reader's path while link states are applied on the control thread, so
- * a neighbour's first CALL can overtake its LINKS. The REPLY must still find its way back.
+ * a neighbour's first CALL can overtake its LINKS, and a call forwarded along a path that just
+ * formed can arrive before the provider has a route back. The REPLY must still find its way back.
  */
 @Timeout(30)
 class FreshLinkTest {
@@ -31,6 +33,16 @@ class FreshLinkTest {
 
   @Test
   void aDirectNeighbourIsAnsweredBeforeItsLinkStateArrives() throws Exception {
+    answeredOverTheLinkItCameBy(false);
+  }
+
+  @Test
+  void aCallForwardedFromAnUnknownContainerIsAnsweredBackTheWayItCame() throws Exception {
+    answeredOverTheLinkItCameBy(true);
+  }
+
+  /** @param forwarded whether the call comes from a container behind the peer, unknown to the provider */
+  private void answeredOverTheLinkItCameBy(boolean forwarded) throws Exception {
     try (TRADEContainer server = TRADEContainer.builder().name("provider")
         .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build()) {
       server.registerAllServices(new Arm()); // its first service: id 1
@@ -39,7 +51,8 @@ class FreshLinkTest {
         Handshake.Peer provider = p.handshake("early");
         // No LINKS from us at all: the provider cannot route to us, only answer over the link.
         Codec codec = new Codec(AllowList.withDefaults(), Limits.DEFAULT, InfoBinding.NONE);
-        RemoteCalls us = new RemoteCalls(p.id, codec, null, null, null, 1 << 20);
+        UUID caller = forwarded ? UUID.randomUUID() : p.id;
+        RemoteCalls us = new RemoteCalls(caller, codec, null, null, null, 1 << 20);
         p.send(us.callFrame(provider.containerId(), 7, 1, 5_000, new Object[] {3}));
         long deadline = System.nanoTime() + Duration.ofSeconds(5).toNanos();
         byte[] frame;
@@ -48,7 +61,7 @@ class FreshLinkTest {
         } while (frame[0] != Wire.REPLY && System.nanoTime() < deadline);
         assertEquals(Wire.REPLY, frame[0], "no reply");
         byte[] reply = Arrays.copyOfRange(frame, 1, frame.length);
-        assertEquals(p.id, Frames.destination(reply));
+        assertEquals(caller, Frames.destination(reply));
         assertEquals(7, Frames.requestId(reply));
         ByteSource body = ByteSource.of(reply, Frames.ROUTING + 8, reply.length - Frames.ROUTING - 8);
         assertEquals(Wire.OK, body.readUnsignedByte());
