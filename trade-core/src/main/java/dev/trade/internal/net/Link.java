@@ -8,8 +8,9 @@ import java.io.OutputStream;
 import java.net.Socket;
 import java.security.GeneralSecurityException;
 import java.util.Arrays;
-import java.util.ArrayDeque;
+import java.util.Queue;
 import java.util.UUID;
+import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
 
@@ -50,14 +51,13 @@ final class Link {
   private final OutputStream out;
   private final int maxFrame;
   private final FrameCipher cipher;
-  private final ArrayDeque<byte[]> queue = new ArrayDeque<>();
+  private final Queue<byte[]> queue = new ConcurrentLinkedQueue<>();
+  private final AtomicBoolean writing = new AtomicBoolean();
   private final AtomicBoolean closed = new AtomicBoolean();
   /** Why the link was closed, by whoever closed it first; null while it is open. */
   private volatile String closeReason;
-  // Guarded by queue.
-  private boolean writing;
-  // Guarded by queue: set when the link is to close once the queued frames are written.
-  private String closeWhenDrained;
+  // Set when the link is to close once the queued frames are written.
+  private volatile String closeWhenDrained;
   // The reading thread queued frames of its own and must flush them before it blocks.
   private volatile boolean deferred;
   private Handler handler;
@@ -174,76 +174,50 @@ final class Link {
    * @throws IOException when the link is closed or the write fails (the link is then closed)
    */
   void send(byte[] frame) throws IOException {
-    synchronized (queue) {
-      if (closed.get()) {
-        throw new IOException("link to " + peerName + " is closed");
-      }
-      if (writing) {
-        queue.add(frame);
-        return;
-      }
-      if (Thread.currentThread() == reader && input.holdsWholeFrame()) {
-        // A reply to one of a burst of calls: it leaves with the others once the burst is served.
-        queue.add(frame);
-        deferred = true;
-        return;
-      }
-      writing = true;
+    if (closed.get()) {
+      throw new IOException("link to " + peerName + " is closed");
     }
-    drain(frame);
+    queue.offer(frame);
+    if (Thread.currentThread() == reader && input.holdsWholeFrame()) {
+      // A reply to one of a burst of calls: it leaves with the others once the burst is served.
+      deferred = true;
+      return;
+    }
+    writeQueued();
   }
 
   /** Writes the frames the reading thread queued of its own (called before it may block). */
   private void flushDeferred() throws IOException {
-    byte[] first;
-    synchronized (queue) {
-      deferred = false;
-      if (writing || queue.isEmpty()) {
-        return; // a writer is at work and takes them along
-      }
-      writing = true;
-      first = queue.poll();
-    }
-    drain(first);
+    deferred = false;
+    writeQueued();
   }
 
-  /** Writes {@code first} and whatever is queued meanwhile, then flushes; the caller is the writer. */
-  private void drain(byte[] first) throws IOException {
-    byte[] next = first;
-    try {
-      while (true) {
-        // Sealing here, in write order, keeps the cipher's frame counter in step with the wire.
-        out.write(cipher == null ? next : cipher.seal(next));
-        synchronized (queue) {
-          next = queue.poll();
-        }
-        if (next != null) {
-          continue;
+  /**
+   * Writes and flushes every queued frame, unless another thread is writing: that one writes them.
+   * No lock: with many callers on one link, a lock here made them queue for it and sleep.
+   */
+  private void writeQueued() throws IOException {
+    while (!queue.isEmpty() && writing.compareAndSet(false, true)) {
+      try {
+        byte[] next;
+        while ((next = queue.poll()) != null) {
+          // Sealing here, in write order, keeps the cipher's frame counter in step with the wire.
+          out.write(cipher == null ? next : cipher.seal(next));
         }
         out.flush();
         lastSent = System.nanoTime();
-        String closing;
-        synchronized (queue) {
-          // Frames queued during the flush are ours to write too.
-          next = queue.poll();
-          if (next != null) {
-            continue;
-          }
-          writing = false;
-          closing = closeWhenDrained;
-        }
-        if (closing != null) {
-          close(closing);
-        }
-        return;
-      }
-    } catch (IOException e) {
-      synchronized (queue) {
-        writing = false;
+      } catch (IOException e) {
         queue.clear();
+        close("write failed: " + e.getMessage());
+        throw e;
+      } finally {
+        writing.set(false);
       }
-      close("write failed: " + e.getMessage());
-      throw e;
+      // A frame queued after our last poll by a sender that found us writing is ours: look again.
+    }
+    String closing = closeWhenDrained;
+    if (closing != null && queue.isEmpty() && !writing.get()) {
+      close(closing);
     }
   }
 
@@ -347,26 +321,11 @@ final class Link {
 
   /** Closes the link once the frames already handed to {@link #send} are written. */
   void closeAfterSending(String reason) {
-    byte[] first;
-    synchronized (queue) {
-      if (writing) {
-        closeWhenDrained = reason;
-        return;
-      }
-      first = queue.poll(); // frames the reading thread deferred
-      if (first != null) {
-        closeWhenDrained = reason;
-        writing = true;
-      }
-    }
-    if (first == null) {
-      close(reason);
-      return;
-    }
+    closeWhenDrained = reason;
     try {
-      drain(first);
+      writeQueued(); // closes once nothing is queued and nobody writes
     } catch (IOException e) {
-      // drain() closed the link.
+      // writeQueued() closed the link.
     }
   }
 
