@@ -110,8 +110,8 @@ public final class AllowList {
    * for primitive types.
    */
   public void addPackageOf(Class<?> type) {
-    if (!packagesAdded.add(type)) {
-      return; // done before; the patterns only grow
+    if (packagesAdded.contains(type) || !packagesAdded.add(type)) {
+      return; // done before (and a read is cheaper than an insert); the patterns only grow
     }
     while (type.isArray()) {
       type = type.getComponentType();

@@ -42,6 +42,7 @@ import java.util.function.Predicate;
 final class RemoteCalls {
   private static final Logger LOG = System.getLogger("dev.trade.net");
   private static final int MAX_TEXT = 64 * 1024;
+  private static final int MAX_IDS = 4096;
   /** Spinning only helps when another core can run the threads that bring the reply. */
   private static final boolean SPIN = Runtime.getRuntime().availableProcessors() > 1;
   /** The longest a caller spins before it parks; replies slower than this are not waited for so. */
@@ -63,6 +64,8 @@ final class RemoteCalls {
   private final int maxFrame;
   private final AtomicLong nextId = new AtomicLong();
   private final Map<Long, Pending> pending = new ConcurrentHashMap<>();
+  /** Parsed container ids of the services called (parsing one costs more than a lookup). */
+  private final Map<String, UUID> containerIds = new ConcurrentHashMap<>();
   /** Callers waiting for a reply; only a lone one spins. */
   private final AtomicInteger waiting = new AtomicInteger();
   /** A running average of recent round trips (ns); racy updates are fine for an estimate. */
@@ -82,7 +85,10 @@ final class RemoteCalls {
   /** Calls a service of another container and waits for its reply until the deadline. */
   Object call(ServiceDescriptor d, Object[] args, long deadlineNanos, ClassLoader loader)
       throws TRADEException {
-    UUID destination = UUID.fromString(d.containerId());
+    UUID destination = containerIds.computeIfAbsent(d.containerId(), UUID::fromString);
+    if (containerIds.size() > MAX_IDS) {
+      containerIds.clear(); // ids of containers long gone; the live ones come back at once
+    }
     Link link = router.nextHop(destination);
     if (link == null) {
       throw LocalInvoker.unavailable(d, "its container is not reachable");
