@@ -154,17 +154,20 @@ final class Finder implements AutoCloseable {
   }
 
   /**
-   * Chooses again {@link #SETTLE_MS} after the first change, with every change heard until then:
-   * a newcomer hears the answers of all the others within milliseconds, and choosing at the first
-   * one would fully mesh it with whoever answered first, links that then stay.
+   * Chooses again {@link #SETTLE_MS} after the first change, with every change heard until then: a
+   * newcomer hears the answers of all the others within milliseconds, and choosing at the first
+   * one would fully mesh it with whoever answered first, links that then stay. The first container
+   * heard at all is chosen at once, so that two containers on their own link without delay.
    */
   private void membershipChanged() {
-    if (choosing.compareAndSet(false, true)) {
+    if (known.size() == 1) {
+      choose();
+    } else if (choosing.compareAndSet(false, true)) {
       timer.schedule(this::choose, SETTLE_MS, TimeUnit.MILLISECONDS);
     }
   }
 
-  private void choose() {
+  private synchronized void choose() {
     choosing.set(false);
     Set<UUID> now = Set.copyOf(Overlay.chosen(self, known.keySet(), linkedNow()));
     wanted = now;
