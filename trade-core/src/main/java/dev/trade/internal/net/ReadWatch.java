@@ -57,6 +57,11 @@ final class ReadWatch implements AutoCloseable {
     }
   }
 
+  /** Whether the watch sleeps until the next served call (for tests). */
+  boolean isParked() {
+    return parked && thread.getState() == Thread.State.WAITING;
+  }
+
   /**
    * Runs {@code link}'s read loop on a thread of the executor.
    *

@@ -11,6 +11,7 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
+import java.time.Duration;
 import java.util.Arrays;
 import java.util.List;
 import java.util.UUID;
@@ -23,6 +24,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
+import org.example.net.Await;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -175,6 +177,28 @@ class LinkTest {
       assertEquals(3, h.seen.poll(5, TimeUnit.SECONDS));
       link.close("done");
     }
+  }
+
+  @Test
+  void theWatchSleepsWhileNoCallIsServed() throws Exception {
+    List<Link> watched = new CopyOnWriteArrayList<>();
+    try (ReadWatch watching = new ReadWatch(watched, workers, "sleepy")) {
+      awaitParked(watching, "before any call");
+      Link link = new Link(near, peer("C"), true, 1 << 20);
+      watched.add(link);
+      Serving h = new Serving(l -> { });
+      link.start(h, watching);
+      for (int i = 1; i <= 20; i++) {
+        sendFromFar(frame(i));
+        assertEquals(i, h.seen.poll(5, TimeUnit.SECONDS));
+      }
+      awaitParked(watching, "after the calls");
+      link.close("done");
+    }
+  }
+
+  private static void awaitParked(ReadWatch watch, String when) {
+    Await.until(Duration.ofSeconds(5), watch::isParked, "the watch to sleep " + when);
   }
 
   @Test
