@@ -26,7 +26,6 @@ import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
-import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Predicate;
 
@@ -43,10 +42,6 @@ final class RemoteCalls {
   private static final Logger LOG = System.getLogger("dev.trade.net");
   private static final int MAX_TEXT = 64 * 1024;
   private static final int MAX_IDS = 4096;
-  /** Spinning only helps when another core can run the threads that bring the reply. */
-  private static final boolean SPIN = Runtime.getRuntime().availableProcessors() > 1;
-  /** The longest a caller spins before it parks; replies slower than this are not waited for so. */
-  private static final long MAX_SPIN_NANOS = TimeUnit.MICROSECONDS.toNanos(100);
 
   /** Finds the link a frame for a container leaves by. */
   interface Router {
@@ -66,10 +61,7 @@ final class RemoteCalls {
   private final Map<Long, Pending> pending = new ConcurrentHashMap<>();
   /** Parsed container ids of the services called (parsing one costs more than a lookup). */
   private final Map<String, UUID> containerIds = new ConcurrentHashMap<>();
-  /** Callers waiting for a reply; only a lone one spins. */
-  private final AtomicInteger waiting = new AtomicInteger();
-  /** A running average of recent round trips (ns); racy updates are fine for an estimate. */
-  private volatile long roundTrip = MAX_SPIN_NANOS / 2;
+  private final ReplyWait replyWait = new ReplyWait();
 
   /** @param maxFrame the largest frame (after its length field) that peers accept: MAXFRAMESIZE */
   RemoteCalls(UUID self, Codec codec, Router router, Network.Host host,
@@ -119,7 +111,7 @@ final class RemoteCalls {
     }
     byte[] reply;
     try {
-      reply = await(p.reply, sent, deadlineNanos);
+      reply = replyWait.await(p.reply, sent, deadlineNanos);
     } catch (TimeoutException e) {
       pending.remove(id);
       throw new TRADETimeoutException("Service " + d.signature() + " of container "
@@ -133,35 +125,6 @@ final class RemoteCalls {
       throw new TRADEException("Interrupted while waiting for " + d.signature());
     }
     return decodeReply(d, reply, loader);
-  }
-
-  /**
-   * Waits for a reply until the deadline. A lone caller whose replies have lately come back within
-   * {@code MAX_SPIN_NANOS} spins for about two round trips before it parks: the link's reading
-   * thread then hands it the reply without waking it, which saves a thread wake-up (5-20 us on a
-   * small machine) per call. Many callers at once park at once: their spinning would take the
-   * cores that produce the replies.
-   */
-  private byte[] await(CompletableFuture<byte[]> reply, long sent, long deadlineNanos)
-      throws TimeoutException, ExecutionException, InterruptedException {
-    try {
-      if (waiting.getAndIncrement() == 0 && SPIN) {
-        long estimate = roundTrip;
-        if (estimate < MAX_SPIN_NANOS) {
-          long until = sent + Math.min(MAX_SPIN_NANOS, 2 * estimate);
-          while (!reply.isDone() && System.nanoTime() - until < 0) {
-            Thread.onSpinWait();
-          }
-        }
-      }
-      byte[] result = reply.isDone() ? reply.get()
-          : reply.get(Math.max(0, deadlineNanos - System.nanoTime()), TimeUnit.NANOSECONDS);
-      long took = System.nanoTime() - sent;
-      roundTrip += (Math.min(took, 16 * MAX_SPIN_NANOS) - roundTrip) >> 3;
-      return result;
-    } finally {
-      waiting.decrementAndGet();
-    }
   }
 
   /** A CALL frame (header included) for a service of {@code destination}. */
