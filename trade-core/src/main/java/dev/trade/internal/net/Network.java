@@ -95,7 +95,7 @@ public final class Network implements AutoCloseable {
           }
         }, this::unreachable);
     Handshake handshake = new Handshake(new Handshake.Identity(settings.tradeSysId(), self, name,
-        host, List.of(), settings.useEncryption()), settings.credentials());
+        host, List.of(), settings.useEncryption(), true), settings.credentials());
     this.connector = new Connector(name, handshake, (int) settings.clientSocketTimeout().toMillis(),
         workers, timer, new Connector.Sink() {
           @Override
@@ -354,6 +354,7 @@ public final class Network implements AutoCloseable {
         case Wire.TABLE:
         case Wire.DELTA:
         case Wire.TABLE_REQUEST:
+        case Wire.DIGEST:
           onControl(() -> replication.received(link, type, payload));
           break;
         default:
