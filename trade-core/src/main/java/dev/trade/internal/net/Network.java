@@ -372,7 +372,7 @@ public final class Network implements AutoCloseable {
               link.peerName, reason);
           calls.failVia(link.peerId, "the connection to " + link.peerName + " was lost ("
               + reason + ")");
-          replication.linkDown();
+          replication.linkDown(link);
           if (!closed) {
             connector.retryNow();
           }

@@ -58,6 +58,12 @@ final class Replication {
   private boolean ownFloodPending;
   private boolean topologyPending;
   private Set<String> ownFloodedNeighbours = Set.of();
+  /**
+   * New links whose peer's DIGEST has not been answered yet. They get no floods until then: the
+   * answer carries everything current, and a table flooded before it would arrive ahead of the
+   * link states that route to its owner.
+   */
+  private final Set<Link> unanswered = new HashSet<>();
 
   /**
    * @param holdDownNanos how long a container that became unreachable stays so unless it proves
@@ -87,6 +93,7 @@ final class Replication {
     floodOwnSoon(link);
     if (link.digests) {
       // What the peer lacks follows its own DIGEST (received below).
+      unanswered.add(link);
       send(link, Digest.frame(topology.states(), registry.localTable(), registry.remoteTables()));
       return;
     }
@@ -99,7 +106,8 @@ final class Replication {
     }
   }
 
-  void linkDown() {
+  void linkDown(Link link) {
+    unanswered.remove(link);
     // At once, whatever was sent last: this is how every container learns quickly that a dead
     // neighbour's link is gone (an edge counts only while both ends list it).
     floodOwn(ownNeighboursChanged(), null);
@@ -186,6 +194,9 @@ final class Replication {
         case Wire.LINKS: {
           String owner = in.readText(MAX_TEXT);
           long version = in.readLong();
+          if (topology.isStale(owner, version)) {
+            break; // a copy that came another way first: most frames of a flood are
+          }
           int n = in.readVarUInt();
           if (n > 65_536) {
             throw new IOException("link state with " + n + " neighbours");
@@ -202,7 +213,8 @@ final class Replication {
             byte[] frame = StateFrames.wrap(Wire.LINKS, payload);
             for (Link l : links.values()) {
               String peer = l.peerId.toString();
-              if (l != from && !peer.equals(owner) && !neighbours.contains(peer)) {
+              if (l != from && !peer.equals(owner) && !neighbours.contains(peer)
+                  && !unanswered.contains(l)) {
                 send(l, frame);
               }
             }
@@ -213,6 +225,9 @@ final class Replication {
         case Wire.TABLE: {
           String owner = in.readText(MAX_TEXT);
           long version = in.readLong();
+          if (registry.isStale(owner, version)) {
+            break; // not decoded, and no need to bring routes up to date for it
+          }
           List<ServiceDescriptor> services = StateFrames.descriptors(tableCodec.read(in, loader()));
           routesNow();
           if (topology.isHeldDown(owner)) {
@@ -227,6 +242,9 @@ final class Replication {
         case Wire.DELTA: {
           String owner = in.readText(MAX_TEXT);
           long version = in.readLong();
+          if (registry.isStale(owner, version)) {
+            break;
+          }
           List<ServiceDescriptor> add = StateFrames.descriptors(tableCodec.read(in, loader()));
           List<Long> remove = StateFrames.ids(tableCodec.read(in, loader()));
           routesNow();
@@ -256,6 +274,9 @@ final class Replication {
           break;
         }
         case Wire.DIGEST: {
+          if (!unanswered.remove(from)) {
+            throw new IOException("a second DIGEST, or one on a link without digests");
+          }
           for (byte[] frame : Digest.answer(payload, topology.states(), registry.localTable(),
               registry.remoteTables(), tableCodec)) {
             send(from, frame);
@@ -347,7 +368,7 @@ final class Replication {
 
   private void flood(byte[] frame, Link except) {
     for (Link l : links.values()) {
-      if (l != except) {
+      if (l != except && !unanswered.contains(l)) {
         send(l, frame);
       }
     }

@@ -65,6 +65,12 @@ final class Topology {
     return states.get(self);
   }
 
+  /** Whether a state of {@code owner} at {@code version} would change nothing (see apply). */
+  boolean isStale(String owner, long version) {
+    LinkState known = states.get(owner);
+    return owner.equals(self) || (known != null && known.version() >= version);
+  }
+
   /**
    * Applies another container's state; true when it was newer than what was known. Routes are
    * computed again when next read, not here: a burst of n states then costs one computation.
