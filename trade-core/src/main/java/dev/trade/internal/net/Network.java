@@ -353,6 +353,10 @@ public final class Network implements AutoCloseable {
         case Wire.LINKS:
         case Wire.TABLE:
         case Wire.DELTA:
+          if (!replication.isStale(type, payload)) {
+            onControl(() -> replication.received(link, type, payload));
+          }
+          break;
         case Wire.TABLE_REQUEST:
         case Wire.DIGEST:
           onControl(() -> replication.received(link, type, payload));

@@ -64,6 +64,7 @@ final class Replication {
    * link states that route to its owner.
    */
   private final Set<Link> unanswered = new HashSet<>();
+  private final FloodFilter filter;
 
   /**
    * @param holdDownNanos how long a container that became unreachable stays so unless it proves
@@ -81,6 +82,12 @@ final class Replication {
     this.links = links;
     this.calls = calls;
     this.topology = new Topology(selfId, holdDownNanos);
+    this.filter = new FloodFilter(topology, registry);
+  }
+
+  /** See {@link FloodFilter#isStale}. Any thread. */
+  boolean isStale(int type, byte[] payload) {
+    return filter.isStale(type, payload);
   }
 
   /** The neighbour on the shortest path to {@code container}, or null. Any thread. */
@@ -323,6 +330,7 @@ final class Replication {
     nextHops = Map.copyOf(hops);
     registry.updateDistances(distances);
     topology.pruneUnreachable(System.nanoTime(), STATE_GRACE_NANOS);
+    filter.pruned();
     List<String> known = registry.remoteContainers();
     for (String owner : known) {
       if (!routes.containsKey(owner)) {
