@@ -35,18 +35,27 @@ final class Handshake {
 
   /** Who we are, as told to peers. */
   record Identity(String systemId, UUID containerId, String name, String host, List<String> addresses,
-      boolean encrypt) {
-    /** An identity that does not encrypt frames. */
+      boolean encrypt, boolean digests) {
+    /** An identity that does not encrypt frames and exchanges full state when a link comes up. */
     Identity(String systemId, UUID containerId, String name, String host, List<String> addresses) {
-      this(systemId, containerId, name, host, addresses, false);
+      this(systemId, containerId, name, host, addresses, false, false);
     }
   }
 
-  /** Who the peer proved to be, and the link's frame cipher when frames are encrypted (else null). */
-  record Peer(UUID containerId, String name, String host, List<String> addresses, FrameCipher cipher) {}
+  /**
+   * Who the peer proved to be, the link's frame cipher when frames are encrypted (else null), and
+   * whether both sides said they exchange DIGEST when the link comes up.
+   */
+  record Peer(UUID containerId, String name, String host, List<String> addresses, FrameCipher cipher,
+      boolean digests) {
+    Peer(UUID containerId, String name, String host, List<String> addresses, FrameCipher cipher) {
+      this(containerId, name, host, addresses, cipher, false);
+    }
+  }
 
   /** HELLO flag: this side encrypts frames after the handshake (USEENCRYPTION). */
   private static final int FLAG_ENCRYPT = 1;
+  private static final int FLAG_DIGEST = 2;
 
   /** The handshake failed; {@code reason} is one of the {@code Wire.REFUSE_*} codes or 0 (I/O). */
   static final class Failure extends Exception {
@@ -124,7 +133,8 @@ final class Handshake {
       }
       hello.get(peerNonce);
       peerFlags = hello.get() & 0xff;
-      peer = new Peer(id, name, host, addresses, null);
+      peer = new Peer(id, name, host, addresses, null,
+          self.digests() && (peerFlags & FLAG_DIGEST) != 0);
     } catch (RuntimeException e) { // BufferUnderflow, bad UTF-8 length...
       throw refuse(out, Wire.REFUSE_MALFORMED, "malformed HELLO: " + e);
     }
@@ -152,7 +162,7 @@ final class Handshake {
       return peer;
     }
     return new Peer(peer.containerId(), peer.name(), peer.host(), peer.addresses(),
-        new FrameCipher(key, self.containerId(), peer.containerId(), nonce, peerNonce));
+        new FrameCipher(key, self.containerId(), peer.containerId(), nonce, peerNonce), peer.digests());
   }
 
   /** The HELLO payload with this nonce. */
@@ -172,7 +182,7 @@ final class Handshake {
       writeString(out, a);
     }
     out.write(nonce);
-    out.writeByte(self.encrypt() ? FLAG_ENCRYPT : 0);
+    out.writeByte((self.encrypt() ? FLAG_ENCRYPT : 0) | (self.digests() ? FLAG_DIGEST : 0));
     return bytes.toByteArray();
   }
 

@@ -45,6 +45,8 @@ final class Link {
   final UUID peerId;
   final String peerName;
   final boolean initiatedHere;
+  /** Whether both sides exchange DIGEST, not their full state, when the link comes up. */
+  final boolean digests;
   private final Socket socket;
   private final DataInputStream in;
   private final LinkInput input;
@@ -79,6 +81,7 @@ final class Link {
     this.peerId = peer.containerId();
     this.peerName = peer.name();
     this.initiatedHere = initiatedHere;
+    this.digests = peer.digests();
     this.maxFrame = maxFrame;
     this.cipher = peer.cipher();
     // Small buffers: a container keeps one link per neighbour, and with 100 containers on a host

@@ -17,6 +17,7 @@ import java.net.Socket;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.UUID;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
@@ -57,6 +58,12 @@ public final class Network implements AutoCloseable {
   private final Replication replication;
   private final ReadWatch readWatch;
   private final Map<UUID, Link> links = new ConcurrentHashMap<>();
+  /**
+   * Every link whose reader runs, registered in {@link #links} or not yet: heartbeats and the
+   * read watch look at these, so that a link is read and kept alive from its handshake on, however
+   * long the control thread takes to get to it.
+   */
+  private final Set<Link> live = ConcurrentHashMap.newKeySet();
   private final Map<InetSocketAddress, UUID> dialled = new ConcurrentHashMap<>();
   // Guarded by this.
   private Finder finder;
@@ -75,7 +82,7 @@ public final class Network implements AutoCloseable {
     this.control = Executors.newSingleThreadExecutor(daemon("trade-control-" + name));
     this.timer = Executors.newSingleThreadScheduledExecutor(daemon("trade-timer-" + name));
     this.workers = Executors.newCachedThreadPool(daemon("trade-worker-" + name));
-    this.readWatch = new ReadWatch(links.values(), workers, name);
+    this.readWatch = new ReadWatch(live, workers, name);
     this.calls = new RemoteCalls(self, codec, this::nextHop, provider, timer,
         settings.maxFrameSize());
     this.replication = new Replication(self, registry, tableCodec, links, calls,
@@ -88,7 +95,7 @@ public final class Network implements AutoCloseable {
           }
         }, this::unreachable);
     Handshake handshake = new Handshake(new Handshake.Identity(settings.tradeSysId(), self, name,
-        host, List.of(), settings.useEncryption()), settings.credentials());
+        host, List.of(), settings.useEncryption(), true), settings.credentials());
     this.connector = new Connector(name, handshake, (int) settings.clientSocketTimeout().toMillis(),
         workers, timer, new Connector.Sink() {
           @Override
@@ -118,7 +125,7 @@ public final class Network implements AutoCloseable {
     for (PeerAddress a : settings.connectContainers()) {
       connector.keepConnected(new InetSocketAddress(a.host(), a.port()));
     }
-    new Heartbeat(links.values(), settings.heartbeatInterval(), settings.failureTimeout(), timer,
+    new Heartbeat(live, settings.heartbeatInterval(), settings.failureTimeout(), timer,
         workers).start();
     if (settings.startDiscovery() || settings.startBroadcast()) {
       finder(settings.startBroadcast(), settings.startDiscovery());
@@ -277,19 +284,28 @@ public final class Network implements AutoCloseable {
       }
       links.put(peer.containerId(), link);
       LOG.log(Level.INFO, "{0}: linked to {1} ({2})", name, peer.name(), socket.getRemoteSocketAddress());
-      link.start(handler, readWatch);
       replication.linkUp(link);
     });
     if (!accepted) {
       link.close("container closing");
+      return;
     }
+    // Reading starts here, not on the control thread: with 100 containers that thread fell
+    // seconds behind the link states and tables it had to apply, and a link that is neither read
+    // nor pinged for FAILURETIMEOUT is closed by its peer as silent. Its frames still reach the
+    // control thread after the task above, which registers the link.
+    live.add(link);
+    if (closed) {
+      link.close("container closing"); // close() may have gone over the live links already
+    }
+    link.start(handler, readWatch);
   }
 
   /**
    * Runs {@code task} on the control thread; false if the container has closed. Then there is no
    * control thread and no state left to update: link readers that end then must not fail for it.
    */
-  private boolean onControl(Runnable task) {
+  boolean onControl(Runnable task) {
     try {
       control.execute(task);
       return true;
@@ -337,7 +353,12 @@ public final class Network implements AutoCloseable {
         case Wire.LINKS:
         case Wire.TABLE:
         case Wire.DELTA:
+          if (!replication.isStale(type, payload)) {
+            onControl(() -> replication.received(link, type, payload));
+          }
+          break;
         case Wire.TABLE_REQUEST:
+        case Wire.DIGEST:
           onControl(() -> replication.received(link, type, payload));
           break;
         default:
@@ -348,13 +369,14 @@ public final class Network implements AutoCloseable {
 
     @Override
     public void closed(Link link, String reason) {
+      live.remove(link);
       onControl(() -> {
         if (links.remove(link.peerId, link)) {
           LOG.log(closed ? Level.DEBUG : Level.INFO, "{0}: link to {1} closed: {2}", name,
               link.peerName, reason);
           calls.failVia(link.peerId, "the connection to " + link.peerName + " was lost ("
               + reason + ")");
-          replication.linkDown();
+          replication.linkDown(link);
           if (!closed) {
             connector.retryNow();
           }
@@ -377,7 +399,7 @@ public final class Network implements AutoCloseable {
     }
     connector.close();
     byte[] goodbye = Frames.finish(Frames.start(Wire.GOODBYE, 0));
-    for (Link l : links.values()) {
+    for (Link l : live) {
       try {
         l.send(goodbye);
         l.closeAfterSending("container closing");

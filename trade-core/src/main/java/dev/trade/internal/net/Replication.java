@@ -1,7 +1,6 @@
 package dev.trade.internal.net;
 
 import dev.trade.TRADESerializationException;
-import dev.trade.internal.codec.ByteSink;
 import dev.trade.internal.codec.ByteSource;
 import dev.trade.internal.codec.Codec;
 import dev.trade.internal.registry.Entry;
@@ -23,7 +22,8 @@ import java.util.function.Consumer;
 /**
  * Keeps every container's view of the system in step: link states (for routing) and service
  * tables, each versioned by its owner and flooded over all links. A frame that changes nothing here
- * (a version already known) is not passed on, so floods end; full state goes to each new neighbour.
+ * (a version already known) is not passed on, so floods end. A new neighbour gets what it lacks
+ * ({@link Digest}), or everything if it does not exchange digests.
  *
  * <p>Everything but {@link #nextHop} and {@link #localChanged} runs on the network's control thread.
  */
@@ -58,6 +58,13 @@ final class Replication {
   private boolean ownFloodPending;
   private boolean topologyPending;
   private Set<String> ownFloodedNeighbours = Set.of();
+  /**
+   * New links whose peer's DIGEST has not been answered yet. They get no floods until then: the
+   * answer carries everything current, and a table flooded before it would arrive ahead of the
+   * link states that route to its owner.
+   */
+  private final Set<Link> unanswered = new HashSet<>();
+  private final FloodFilter filter;
 
   /**
    * @param holdDownNanos how long a container that became unreachable stays so unless it proves
@@ -75,6 +82,12 @@ final class Replication {
     this.links = links;
     this.calls = calls;
     this.topology = new Topology(selfId, holdDownNanos);
+    this.filter = new FloodFilter(topology, registry);
+  }
+
+  /** See {@link FloodFilter#isStale}. Any thread. */
+  boolean isStale(int type, byte[] payload) {
+    return filter.isStale(type, payload);
   }
 
   /** The neighbour on the shortest path to {@code container}, or null. Any thread. */
@@ -85,16 +98,23 @@ final class Replication {
   void linkUp(Link link) {
     ownNeighboursChanged();
     floodOwnSoon(link);
-    for (Topology.LinkState s : topology.states()) {
-      send(link, linksFrame(s));
+    if (link.digests) {
+      // What the peer lacks follows its own DIGEST (received below).
+      unanswered.add(link);
+      send(link, Digest.frame(topology.states(), registry.localTable(), registry.remoteTables()));
+      return;
     }
-    send(link, tableFrame(registry.localTable()));
+    for (Topology.LinkState s : topology.states()) {
+      send(link, StateFrames.links(s));
+    }
+    send(link, StateFrames.table(tableCodec, registry.localTable()));
     for (Registry.Table t : registry.remoteTables()) {
-      send(link, tableFrame(t));
+      send(link, StateFrames.table(tableCodec, t));
     }
   }
 
-  void linkDown() {
+  void linkDown(Link link) {
+    unanswered.remove(link);
     // At once, whatever was sent last: this is how every container learns quickly that a dead
     // neighbour's link is gone (an edge counts only while both ends list it).
     floodOwn(ownNeighboursChanged(), null);
@@ -106,7 +126,7 @@ final class Replication {
    * a container that gains d links at start-up floods a few versions, not d, and every version
    * reaches every container over every link.
    *
-   * @param except a new link that has been sent the current state already, or null
+   * @param except a new link that gets the current state in the link-up exchange, or null
    */
   private void floodOwnSoon(Link except) {
     long since = System.nanoTime() - ownFloodAt;
@@ -142,7 +162,7 @@ final class Replication {
     ownFloodAt = System.nanoTime();
     ownFlooded = own.version();
     ownFloodedNeighbours = own.neighbours();
-    flood(linksFrame(own), except);
+    flood(StateFrames.links(own), except);
   }
 
   private Topology.LinkState ownNeighboursChanged() {
@@ -171,7 +191,7 @@ final class Replication {
       return;
     }
     long version = registry.localVersion();
-    control.execute(() -> flood(deltaFrame(version, add, remove), null));
+    control.execute(() -> flood(StateFrames.delta(tableCodec, selfId, version, add, remove), null));
   }
 
   void received(Link from, int type, byte[] payload) {
@@ -181,6 +201,9 @@ final class Replication {
         case Wire.LINKS: {
           String owner = in.readText(MAX_TEXT);
           long version = in.readLong();
+          if (topology.isStale(owner, version)) {
+            break; // a copy that came another way first: most frames of a flood are
+          }
           int n = in.readVarUInt();
           if (n > 65_536) {
             throw new IOException("link state with " + n + " neighbours");
@@ -194,10 +217,11 @@ final class Replication {
             // version over exactly those links, and gives all states to a link that comes up
             // later): passing it to them again only multiplies frames. In a full mesh that was
             // n - 2 copies per receiver, n^2 frames per link change.
-            byte[] frame = payloadFrame(Wire.LINKS, payload);
+            byte[] frame = StateFrames.wrap(Wire.LINKS, payload);
             for (Link l : links.values()) {
               String peer = l.peerId.toString();
-              if (l != from && !peer.equals(owner) && !neighbours.contains(peer)) {
+              if (l != from && !peer.equals(owner) && !neighbours.contains(peer)
+                  && !unanswered.contains(l)) {
                 send(l, frame);
               }
             }
@@ -208,22 +232,28 @@ final class Replication {
         case Wire.TABLE: {
           String owner = in.readText(MAX_TEXT);
           long version = in.readLong();
-          List<ServiceDescriptor> services = descriptors(tableCodec.read(in, loader()));
+          if (registry.isStale(owner, version)) {
+            break; // not decoded, and no need to bring routes up to date for it
+          }
+          List<ServiceDescriptor> services = StateFrames.descriptors(tableCodec.read(in, loader()));
           routesNow();
           if (topology.isHeldDown(owner)) {
             break; // a stale copy of a container that just went away
           }
           if (registry.applyTable(new Registry.Table(owner, version, services), distance(owner))) {
             ownStateBefore(from);
-            flood(payloadFrame(Wire.TABLE, payload), from);
+            flood(StateFrames.wrap(Wire.TABLE, payload), from);
           }
           break;
         }
         case Wire.DELTA: {
           String owner = in.readText(MAX_TEXT);
           long version = in.readLong();
-          List<ServiceDescriptor> add = descriptors(tableCodec.read(in, loader()));
-          List<Long> remove = ids(tableCodec.read(in, loader()));
+          if (registry.isStale(owner, version)) {
+            break;
+          }
+          List<ServiceDescriptor> add = StateFrames.descriptors(tableCodec.read(in, loader()));
+          List<Long> remove = StateFrames.ids(tableCodec.read(in, loader()));
           routesNow();
           if (topology.isHeldDown(owner)) {
             break;
@@ -231,22 +261,32 @@ final class Replication {
           Registry.DeltaResult r = registry.applyDelta(owner, version, add, remove, distance(owner));
           if (r == Registry.DeltaResult.APPLIED) {
             ownStateBefore(from);
-            flood(payloadFrame(Wire.DELTA, payload), from);
+            flood(StateFrames.wrap(Wire.DELTA, payload), from);
           } else if (r == Registry.DeltaResult.GAP) {
-            send(from, tableRequestFrame(owner));
+            send(from, StateFrames.tableRequest(owner));
           }
           break;
         }
         case Wire.TABLE_REQUEST: {
           String owner = in.readText(MAX_TEXT);
           if (owner.equals(selfId)) {
-            send(from, tableFrame(registry.localTable()));
+            send(from, StateFrames.table(tableCodec, registry.localTable()));
           } else {
             for (Registry.Table t : registry.remoteTables()) {
               if (t.containerId().equals(owner)) {
-                send(from, tableFrame(t));
+                send(from, StateFrames.table(tableCodec, t));
               }
             }
+          }
+          break;
+        }
+        case Wire.DIGEST: {
+          if (!unanswered.remove(from)) {
+            throw new IOException("a second DIGEST, or one on a link without digests");
+          }
+          for (byte[] frame : Digest.answer(payload, topology.states(), registry.localTable(),
+              registry.remoteTables(), tableCodec)) {
+            send(from, frame);
           }
           break;
         }
@@ -290,6 +330,7 @@ final class Replication {
     nextHops = Map.copyOf(hops);
     registry.updateDistances(distances);
     topology.pruneUnreachable(System.nanoTime(), STATE_GRACE_NANOS);
+    filter.pruned();
     List<String> known = registry.remoteContainers();
     for (String owner : known) {
       if (!routes.containsKey(owner)) {
@@ -318,7 +359,7 @@ final class Replication {
       if (!before.containsKey(h.getKey()) && !known.contains(h.getKey().toString())) {
         Link via = links.get(h.getValue());
         if (via != null) {
-          send(via, tableRequestFrame(h.getKey().toString()));
+          send(via, StateFrames.tableRequest(h.getKey().toString()));
         }
       }
     }
@@ -333,86 +374,9 @@ final class Replication {
     return Replication.class.getClassLoader();
   }
 
-  private static List<ServiceDescriptor> descriptors(Object value) throws IOException {
-    List<ServiceDescriptor> result = new ArrayList<>();
-    if (!(value instanceof List)) {
-      throw new IOException("service table is not a list");
-    }
-    for (Object o : (List<?>) value) {
-      if (!(o instanceof ServiceDescriptor)) {
-        throw new IOException("service table holds a " + (o == null ? "null" : o.getClass().getName()));
-      }
-      result.add((ServiceDescriptor) o);
-    }
-    return result;
-  }
-
-  private static List<Long> ids(Object value) throws IOException {
-    List<Long> result = new ArrayList<>();
-    if (!(value instanceof List)) {
-      throw new IOException("removed ids are not a list");
-    }
-    for (Object o : (List<?>) value) {
-      if (!(o instanceof Long)) {
-        throw new IOException("removed id is not a long");
-      }
-      result.add((Long) o);
-    }
-    return result;
-  }
-
-  private byte[] linksFrame(Topology.LinkState s) {
-    ByteSink out = Frames.start(Wire.LINKS, 64 + 40 * s.neighbours().size());
-    out.writeText(s.owner());
-    out.writeLong(s.version());
-    out.writeVarUInt(s.neighbours().size());
-    for (String n : s.neighbours()) {
-      out.writeText(n);
-    }
-    return Frames.finish(out);
-  }
-
-  private byte[] tableFrame(Registry.Table t) {
-    ByteSink out = Frames.start(Wire.TABLE, 256);
-    out.writeText(t.containerId());
-    out.writeLong(t.version());
-    writeValue(out, t.services());
-    return Frames.finish(out);
-  }
-
-  private byte[] deltaFrame(long version, List<ServiceDescriptor> add, List<Long> remove) {
-    ByteSink out = Frames.start(Wire.DELTA, 256);
-    out.writeText(selfId);
-    out.writeLong(version);
-    writeValue(out, add);
-    writeValue(out, remove);
-    return Frames.finish(out);
-  }
-
-  private void writeValue(ByteSink out, Object value) {
-    try {
-      tableCodec.write(value, out);
-    } catch (TRADESerializationException e) {
-      // Descriptors hold strings, numbers and annotation values only.
-      throw new IllegalStateException("cannot encode a service table", e);
-    }
-  }
-
-  static byte[] tableRequestFrame(String owner) {
-    ByteSink out = Frames.start(Wire.TABLE_REQUEST, 64);
-    out.writeText(owner);
-    return Frames.finish(out);
-  }
-
-  private static byte[] payloadFrame(int type, byte[] payload) {
-    ByteSink out = Frames.start(type, payload.length);
-    out.writeBytes(payload);
-    return Frames.finish(out);
-  }
-
   private void flood(byte[] frame, Link except) {
     for (Link l : links.values()) {
-      if (l != except) {
+      if (l != except && !unanswered.contains(l)) {
         send(l, frame);
       }
     }

@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Queue;
 import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 
 /**
  * Link-state routing: every container floods the list of containers it has a direct link to
@@ -18,7 +19,8 @@ import java.util.Set;
  * forwards along a shortest path of the same graph, and a hop limit on every forwarded frame bounds
  * the damage while views disagree.
  *
- * <p>Not thread-safe: the network's control thread owns it.
+ * <p>Not thread-safe: the network's control thread owns it, but {@link #isStale} may be called from
+ * any thread.
  */
 final class Topology {
   /** A container's reported neighbours. */
@@ -33,6 +35,8 @@ final class Topology {
 
   private final String self;
   private final Map<String, LinkState> states = new HashMap<>();
+  /** The version of each state in {@link #states}, for {@link #isStale} on other threads. */
+  private final Map<String, Long> versions = new ConcurrentHashMap<>();
   private final Map<String, Long> unreachableSince = new HashMap<>();
   /** Containers that just became unreachable: their state version then, and until when it holds. */
   private final Map<String, long[]> holdDown = new HashMap<>();
@@ -51,18 +55,26 @@ final class Topology {
     this.self = self;
     this.holdDownNanos = holdDownNanos;
     states.put(self, new LinkState(self, 0, Set.of()));
+    versions.put(self, 0L);
   }
 
   /** Sets this container's own neighbours; returns the new own state to flood. */
   LinkState setOwnNeighbours(Set<String> neighbours) {
     LinkState s = new LinkState(self, ++ownVersion, neighbours);
     states.put(self, s);
+    versions.put(self, s.version());
     recompute();
     return s;
   }
 
   LinkState own() {
     return states.get(self);
+  }
+
+  /** Whether a state of {@code owner} at {@code version} would change nothing (see apply). Any thread. */
+  boolean isStale(String owner, long version) {
+    Long known = versions.get(owner);
+    return owner.equals(self) || (known != null && known >= version);
   }
 
   /**
@@ -78,6 +90,7 @@ final class Topology {
       return false;
     }
     states.put(s.owner(), s);
+    versions.put(s.owner(), s.version());
     stale = true;
     return true;
   }
@@ -122,6 +135,7 @@ final class Topology {
     unreachableSince.entrySet().removeIf(e -> {
       if (nowNanos - e.getValue() > graceNanos) {
         states.remove(e.getKey());
+        versions.remove(e.getKey());
         return true;
       }
       return !states.containsKey(e.getKey());

@@ -21,6 +21,7 @@ final class Wire {
   static final int TABLE = 21;
   static final int DELTA = 22;
   static final int TABLE_REQUEST = 23;
+  static final int DIGEST = 24;
   static final int CALL = 30;
   static final int REPLY = 31;
 

@@ -180,6 +180,16 @@ public final class Registry {
   }
 
   /**
+   * Whether a table or delta of {@code owner} at {@code version} would change nothing: it is this
+   * container's own, or not newer than the version known. Lets a receiver drop the copies a flood
+   * brings over every link before it decodes them.
+   */
+  public synchronized boolean isStale(String owner, long version) {
+    Long known = versions.get(owner);
+    return owner.equals(containerId) || (known != null && known >= version);
+  }
+
+  /**
    * Replaces another container's whole table when {@code table} is newer than what is known.
    *
    * @return true when applied (the caller floods it on), false when stale

@@ -27,6 +27,7 @@ import java.util.HexFormat;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.UUID;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -163,7 +164,14 @@ class FrameExamplesTest {
 
   @Test
   void tableRequestExample() throws Exception {
-    assertDocumented("table-request", Replication.tableRequestFrame(ARM.toString()));
+    assertDocumented("table-request", StateFrames.tableRequest(ARM.toString()));
+  }
+
+  @Test
+  void digestExample() throws Exception {
+    assertDocumented("digest", Digest.frame(
+        List.of(new Topology.LinkState(ARM.toString(), 1, Set.of(HUB.toString()))),
+        new Registry.Table(ARM.toString(), 1, List.of()), List.of()));
   }
 
   @Test

@@ -48,6 +48,19 @@ final class RawPeer implements AutoCloseable {
     return peer;
   }
 
+  /**
+   * Authenticates as {@link #handshake(String)} does, saying in its HELLO that it exchanges DIGEST
+   * when the link comes up.
+   */
+  Handshake.Peer handshakeWithDigests(String name) throws IOException, Handshake.Failure {
+    socket.setSoTimeout(5_000);
+    Handshake h = new Handshake(
+        new Handshake.Identity("diarc", id, name, "localhost", List.of(), false, true), "diarcUser");
+    Handshake.Peer peer = h.run(in, out);
+    socket.setSoTimeout(0);
+    return peer;
+  }
+
   /** Authenticates with the default TRADESYSID and CREDENTIALS. */
   Handshake.Peer handshake(String name) throws IOException, Handshake.Failure {
     return handshake("diarc", "diarcUser", name);

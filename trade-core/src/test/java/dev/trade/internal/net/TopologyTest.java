@@ -24,6 +24,21 @@ class TopologyTest {
     assertEquals(new Topology.Route("a", 1), t.route("a"));
   }
 
+  /** Link readers drop the copies a flood brings by this check; a pruned state counts as unknown. */
+  @Test
+  void staleMeansAVersionAppliedAlreadyAndForgetsPrunedStates() {
+    Topology t = new Topology("me", LONG);
+    assertTrue(t.isStale("me", 5), "own states are never taken from others");
+    assertFalse(t.isStale("b", 1));
+    t.apply(new Topology.LinkState("b", 2, Set.of("a")));
+    assertTrue(t.isStale("b", 1));
+    assertTrue(t.isStale("b", 2));
+    assertFalse(t.isStale("b", 3));
+    t.pruneUnreachable(0, 1); // b is unreachable from now on...
+    t.pruneUnreachable(10, 1); // ...and for longer than the grace: forgotten
+    assertFalse(t.isStale("b", 2), "a pruned state may be learnt again");
+  }
+
   @Test
   void aStateThatArrivesBeforeItsConnectingStatesIsKept() {
     Topology t = new Topology("me", LONG);

@@ -1,0 +1,113 @@
+package dev.trade.internal.net;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trade.TRADEContainer;
+import dev.trade.TRADEService;
+import dev.trade.internal.registry.Registry;
+import java.net.InetSocketAddress;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+
+/**
+ * When both sides of a new link exchange digests, each sends the other only the link states and
+ * tables it lacks; a peer that does not is sent everything at once, as before.
+ */
+@Timeout(30)
+class DigestTest {
+  private TRADEContainer provider;
+  private InetSocketAddress address;
+
+  public static class Arm {
+    @TRADEService
+    public boolean openGripper(int speed) {
+      return speed > 0;
+    }
+  }
+
+  @BeforeEach
+  void start() throws Exception {
+    provider = TRADEContainer.builder().name("provider").property("STARTACCEPTINGCONNECTIONS", "true")
+        .property("SERVERIPS", "127.0.0.1@0").build();
+    provider.registerAllServices(new Arm());
+    String[] a = provider.getServerAddresses().get(0).split("@");
+    address = new InetSocketAddress(a[0], Integer.parseInt(a[1]));
+  }
+
+  @AfterEach
+  void close() {
+    provider.close();
+  }
+
+  /** Frame types (first byte of each) read until the deadline, PINGs left out. */
+  private static List<Integer> framesFor(RawPeer p, Duration window) throws Exception {
+    List<Integer> types = new ArrayList<>();
+    long deadline = System.nanoTime() + window.toNanos();
+    while (System.nanoTime() - deadline < 0) {
+      byte[] f = p.readFrame(); // the provider pings every 250 ms
+      if (f[0] != Wire.PING) {
+        types.add((int) f[0]);
+      }
+    }
+    return types;
+  }
+
+  /** Reads up to the provider's DIGEST and returns the versions it lists. */
+  private static Map<String, long[]> digestOf(RawPeer p) throws Exception {
+    long deadline = System.nanoTime() + Duration.ofSeconds(5).toNanos();
+    byte[] f;
+    do {
+      f = p.readFrame();
+      assertTrue(f[0] == Wire.PING || f[0] == Wire.DIGEST, "before the digest: type " + f[0]);
+    } while (f[0] != Wire.DIGEST && System.nanoTime() - deadline < 0);
+    assertEquals(Wire.DIGEST, f[0]);
+    return Digest.read(Arrays.copyOfRange(f, 1, f.length));
+  }
+
+  @Test
+  void aNeighbourThatHasEverythingIsSentNoStateAgain() throws Exception {
+    try (RawPeer p = RawPeer.connect(address)) {
+      assertTrue(p.handshakeWithDigests("knowing").digests());
+      String id = provider.getId();
+      long[] versions = digestOf(p).get(id);
+      assertNotNull(versions, "the provider lists itself");
+      assertTrue(versions[0] > 0 && versions[1] > 0, "a link and a service: " + Arrays.toString(versions));
+      // We claim to have the provider's link state and table at the versions it has.
+      p.send(Digest.frame(List.of(new Topology.LinkState(id, versions[0], Set.of(p.id.toString()))),
+          new Registry.Table(p.id.toString(), 0, List.of()),
+          List.of(new Registry.Table(id, versions[1], List.of()))));
+      assertEquals(List.of(), framesFor(p, Duration.ofMillis(1_000)));
+    }
+  }
+
+  @Test
+  void aNeighbourIsSentWhatItLacks() throws Exception {
+    try (RawPeer p = RawPeer.connect(address)) {
+      p.handshakeWithDigests("newcomer");
+      digestOf(p);
+      p.send(Digest.frame(List.of(), new Registry.Table(p.id.toString(), 0, List.of()), List.of()));
+      List<Integer> types = framesFor(p, Duration.ofMillis(1_000));
+      assertEquals(List.of((int) Wire.LINKS, (int) Wire.TABLE), types, "its link state, then its table");
+    }
+  }
+
+  @Test
+  void aPeerWithoutDigestsIsSentEverythingAtOnce() throws Exception {
+    try (RawPeer p = RawPeer.connect(address)) {
+      assertFalse(p.handshake("older").digests());
+      List<Integer> types = framesFor(p, Duration.ofMillis(1_000));
+      assertEquals(List.of((int) Wire.LINKS, (int) Wire.TABLE), types);
+    }
+  }
+}

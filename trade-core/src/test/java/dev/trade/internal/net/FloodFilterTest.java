@@ -1,0 +1,61 @@
+package dev.trade.internal.net;
+
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trade.internal.codec.AllowList;
+import dev.trade.internal.codec.Codec;
+import dev.trade.internal.codec.InfoBinding;
+import dev.trade.internal.codec.Limits;
+import dev.trade.internal.registry.Registry;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Set;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+
+/** What a link's reader drops before it queues a replication frame for the control thread. */
+class FloodFilterTest {
+  private final Topology topology = new Topology("me", TimeUnit.SECONDS.toNanos(60));
+  private final Registry registry = new Registry("me", "me", "host");
+  private final FloodFilter filter = new FloodFilter(topology, registry);
+
+  private static byte[] payload(byte[] frame) {
+    return Arrays.copyOfRange(frame, Wire.HEADER, frame.length);
+  }
+
+  private static byte[] links(String owner, long version) {
+    return payload(StateFrames.links(new Topology.LinkState(owner, version, Set.of("a"))));
+  }
+
+  @Test
+  void aLinkStateIsQueuedOnceWhateverTheLinksItComesOver() {
+    assertFalse(filter.isStale(Wire.LINKS, links("b", 1)));
+    assertTrue(filter.isStale(Wire.LINKS, links("b", 1)), "queued already, not applied yet");
+    assertFalse(filter.isStale(Wire.LINKS, links("b", 2)), "newer");
+    assertTrue(filter.isStale(Wire.LINKS, links("b", 1)), "older than one queued");
+    assertTrue(filter.isStale(Wire.LINKS, links("me", 9)), "our own");
+  }
+
+  @Test
+  void aPrunedLinkStateMayComeAgain() {
+    assertFalse(filter.isStale(Wire.LINKS, links("b", 1)));
+    topology.apply(new Topology.LinkState("b", 1, Set.of("a")));
+    assertTrue(filter.isStale(Wire.LINKS, links("b", 1)));
+    topology.pruneUnreachable(0, 1);
+    topology.pruneUnreachable(10, 1); // unreachable for longer than the grace: forgotten
+    filter.pruned();
+    assertFalse(filter.isStale(Wire.LINKS, links("b", 1)));
+  }
+
+  @Test
+  void tablesAreDroppedOnlyWhenAppliedAlready() {
+    Codec codec = new Codec(AllowList.withDefaults(), Limits.DEFAULT, InfoBinding.NONE);
+    byte[] table = payload(StateFrames.table(codec, new Registry.Table("x", 1, List.of())));
+    assertFalse(filter.isStale(Wire.TABLE, table));
+    assertFalse(filter.isStale(Wire.TABLE, table), "a table dropped while held down may be asked for again");
+    registry.applyTable(new Registry.Table("x", 1, List.of()), 1);
+    assertTrue(filter.isStale(Wire.TABLE, table));
+    assertFalse(filter.isStale(Wire.LINKS, new byte[] {1}), "malformed: left to the control thread");
+  }
+}
