@@ -57,6 +57,7 @@ public final class Network implements AutoCloseable {
   private final RemoteCalls calls;
   private final Replication replication;
   private final ReadWatch readWatch;
+  private final Dispatch dispatch;
   private final Map<UUID, Link> links = new ConcurrentHashMap<>();
   /**
    * Every link whose reader runs, registered in {@link #links} or not yet: heartbeats and the
@@ -94,6 +95,7 @@ public final class Network implements AutoCloseable {
             // Nothing left to refresh.
           }
         }, this::unreachable);
+    this.dispatch = new Dispatch(calls, replication, this);
     Handshake handshake = new Handshake(new Handshake.Identity(settings.tradeSysId(), self, name,
         host, List.of(), settings.useEncryption(), true), settings.credentials());
     this.connector = new Connector(name, handshake, (int) settings.clientSocketTimeout().toMillis(),
@@ -298,7 +300,7 @@ public final class Network implements AutoCloseable {
     if (closed) {
       link.close("container closing"); // close() may have gone over the live links already
     }
-    link.start(handler, readWatch);
+    link.start(dispatch, readWatch);
   }
 
   /**
@@ -331,59 +333,22 @@ public final class Network implements AutoCloseable {
     return c != 0 ? c : Long.compareUnsigned(a.getLeastSignificantBits(), b.getLeastSignificantBits());
   }
 
-  private final Link.Handler handler = new Link.Handler() {
-    @Override
-    public boolean frame(Link link, int type, byte[] payload) throws IOException {
-      switch (type) {
-        case Wire.CALL:
-        case Wire.REPLY:
-          if (payload.length < Frames.ROUTING + 8) {
-            throw new IOException("short frame of type " + type);
-          }
-          if (type == Wire.CALL) {
-            return calls.onCall(link, payload);
-          }
-          calls.onReply(payload);
-          break;
-        case Wire.PING:
-          break;
-        case Wire.GOODBYE:
-          link.close("said goodbye");
-          break;
-        case Wire.LINKS:
-        case Wire.TABLE:
-        case Wire.DELTA:
-          if (!replication.isStale(type, payload)) {
-            onControl(() -> replication.received(link, type, payload));
-          }
-          break;
-        case Wire.TABLE_REQUEST:
-        case Wire.DIGEST:
-          onControl(() -> replication.received(link, type, payload));
-          break;
-        default:
-          throw new IOException("unknown frame type " + type);
-      }
-      return true;
-    }
-
-    @Override
-    public void closed(Link link, String reason) {
-      live.remove(link);
-      onControl(() -> {
-        if (links.remove(link.peerId, link)) {
-          LOG.log(closed ? Level.DEBUG : Level.INFO, "{0}: link to {1} closed: {2}", name,
-              link.peerName, reason);
-          calls.failVia(link.peerId, "the connection to " + link.peerName + " was lost ("
-              + reason + ")");
-          replication.linkDown(link);
-          if (!closed) {
-            connector.retryNow();
-          }
+  /** A link's reader ended (its reading thread). */
+  void linkClosed(Link link, String reason) {
+    live.remove(link);
+    onControl(() -> {
+      if (links.remove(link.peerId, link)) {
+        LOG.log(closed ? Level.DEBUG : Level.INFO, "{0}: link to {1} closed: {2}", name,
+            link.peerName, reason);
+        calls.failVia(link.peerId, "the connection to " + link.peerName + " was lost ("
+            + reason + ")");
+        replication.linkDown(link);
+        if (!closed) {
+          connector.retryNow();
         }
-      });
-    }
-  };
+      }
+    });
+  }
 
   /** Says goodbye to every neighbour, closes all links and stops all threads. */
   @Override

@@ -6,7 +6,6 @@ import java.lang.annotation.Annotation;
 import java.lang.reflect.Method;
 import java.util.ArrayList;
 import java.util.Collection;
-import java.util.Comparator;
 import java.util.HashMap;
 import java.util.IdentityHashMap;
 import java.util.LinkedHashMap;
@@ -35,18 +34,6 @@ public final class Registry {
   public interface Listener {
     void changed(List<Entry> added, List<Entry> removed);
   }
-
-  /** By distance, then container id, then service id. */
-  private static final Comparator<Entry> PREFERENCE = new Comparator<>() {
-    @Override
-    public int compare(Entry a, Entry b) {
-      int c = Integer.compare(a.distance(), b.distance());
-      if (c == 0) {
-        c = a.descriptor().containerId().compareTo(b.descriptor().containerId());
-      }
-      return c != 0 ? c : Long.compare(a.descriptor().serviceId(), b.descriptor().serviceId());
-    }
-  };
 
   private final String containerId;
   private final String containerName;
@@ -327,7 +314,7 @@ public final class Registry {
   /** The services matching {@code query}, in preference order; {@code name} narrows the scan. */
   public List<Entry> find(String name, Query query) {
     Snapshot s = snapshot;
-    List<Entry> candidates = name == null ? s.ordered : s.byName.getOrDefault(name, List.of());
+    List<Entry> candidates = name == null ? s.ordered() : s.byName().getOrDefault(name, List.of());
     List<Entry> result = new ArrayList<>();
     for (Entry e : candidates) {
       if (query.matches(e, containerId)) {
@@ -340,7 +327,7 @@ public final class Registry {
   /** The first match in preference order, or null. */
   public Entry findFirst(String name, Query query) {
     Snapshot s = snapshot;
-    List<Entry> candidates = name == null ? s.ordered : s.byName.getOrDefault(name, List.of());
+    List<Entry> candidates = name == null ? s.ordered() : s.byName().getOrDefault(name, List.of());
     for (Entry e : candidates) {
       if (query.matches(e, containerId)) {
         return e;
@@ -351,12 +338,12 @@ public final class Registry {
 
   /** Every known entry, in preference order. */
   public List<Entry> all() {
-    return snapshot.ordered;
+    return snapshot.ordered();
   }
 
   /** The entry of a known service, or null when it is not (or no longer) known here. */
   public Entry entry(ServiceDescriptor d) {
-    return snapshot.byKey.get(new Key(d.containerId(), d.serviceId()));
+    return snapshot.entry(d);
   }
 
   private ServiceDescriptor descriptor(String name, List<String> names, List<String> types,
@@ -374,58 +361,5 @@ public final class Registry {
 
   private static String describe(Object provider) {
     return provider.getClass().getName() + "@" + Integer.toHexString(System.identityHashCode(provider));
-  }
-
-  /**
-   * A service's identity as a map key. A class rather than a record: a record's equals and
-   * hashCode are generated at run time on first use, which costs a starting container about 20
-   * method-handle classes (see docs/benchmarks.md, "Start → callable").
-   */
-  private static final class Key {
-    private final String containerId;
-    private final long serviceId;
-
-    Key(String containerId, long serviceId) {
-      this.containerId = containerId;
-      this.serviceId = serviceId;
-    }
-
-    @Override
-    public boolean equals(Object o) {
-      return o instanceof Key && ((Key) o).serviceId == serviceId
-          && ((Key) o).containerId.equals(containerId);
-    }
-
-    @Override
-    public int hashCode() {
-      return 31 * containerId.hashCode() + Long.hashCode(serviceId);
-    }
-  }
-
-  private record Snapshot(List<Entry> ordered, Map<String, List<Entry>> byName, Map<Key, Entry> byKey) {
-    static final Snapshot EMPTY = new Snapshot(List.of(), Map.of(), Map.of());
-
-    static Snapshot of(Map<String, Map<Long, Entry>> tables) {
-      List<Entry> all = new ArrayList<>();
-      for (Map<Long, Entry> t : tables.values()) {
-        all.addAll(t.values());
-      }
-      all.sort(PREFERENCE);
-      Map<String, List<Entry>> byName = new HashMap<>();
-      Map<Key, Entry> byKey = new HashMap<>();
-      for (Entry e : all) {
-        List<Entry> named = byName.get(e.descriptor().name());
-        if (named == null) {
-          named = new ArrayList<>();
-          byName.put(e.descriptor().name(), named);
-        }
-        named.add(e);
-        byKey.put(new Key(e.descriptor().containerId(), e.descriptor().serviceId()), e);
-      }
-      for (Map.Entry<String, List<Entry>> e : byName.entrySet()) {
-        e.setValue(List.copyOf(e.getValue()));
-      }
-      return new Snapshot(List.copyOf(all), Map.copyOf(byName), Map.copyOf(byKey));
-    }
   }
 }

@@ -1,0 +1,61 @@
+package dev.trade.internal.net;
+
+import java.io.IOException;
+
+/**
+ * What a container does with each frame its links read, on the reading thread: calls and replies
+ * take the fast path ({@link RemoteCalls}), replication frames go to the control thread in order
+ * (copies that are already stale are dropped here, before they queue), heartbeats only count as
+ * life. Safe for concurrent use.
+ */
+final class Dispatch implements Link.Handler {
+  private final RemoteCalls calls;
+  private final Replication replication;
+  private final Network network;
+
+  Dispatch(RemoteCalls calls, Replication replication, Network network) {
+    this.calls = calls;
+    this.replication = replication;
+    this.network = network;
+  }
+
+  @Override
+  public boolean frame(Link link, int type, byte[] payload) throws IOException {
+    switch (type) {
+      case Wire.CALL:
+      case Wire.REPLY:
+        if (payload.length < Frames.ROUTING + 8) {
+          throw new IOException("short frame of type " + type);
+        }
+        if (type == Wire.CALL) {
+          return calls.onCall(link, payload);
+        }
+        calls.onReply(payload);
+        break;
+      case Wire.PING:
+        break;
+      case Wire.GOODBYE:
+        link.close("said goodbye");
+        break;
+      case Wire.LINKS:
+      case Wire.TABLE:
+      case Wire.DELTA:
+        if (!replication.isStale(type, payload)) {
+          network.onControl(() -> replication.received(link, type, payload));
+        }
+        break;
+      case Wire.TABLE_REQUEST:
+      case Wire.DIGEST:
+        network.onControl(() -> replication.received(link, type, payload));
+        break;
+      default:
+        throw new IOException("unknown frame type " + type);
+    }
+    return true;
+  }
+
+  @Override
+  public void closed(Link link, String reason) {
+    network.linkClosed(link, reason);
+  }
+}
