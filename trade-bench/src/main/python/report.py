@@ -215,17 +215,19 @@ def main():
         w("## Many containers on one host\n")
         w("Containers run 25 to a JVM plus one JVM holding a single container under `-Xmx16m` "
           "(starting 100 JVMs on 2 cores would measure JVM start-up, not TRADE). All find each other "
-          "by multicast on loopback. *Converged*: from the moment every JVM is told to build its "
-          "containers until every container lists every container's service. *Heap per container*: "
+          "by multicast on loopback. A JVM starts its containers one after the other. *All built*: from the moment every JVM is told to build "
+          "its containers until the last one has registered its service. *Converged*: from that same "
+          "moment until every container lists every container's service. *Heap per container*: "
           "heap in use after full GCs with the containers running, minus the same JVM's heap before "
           "building them, divided by their number.\n")
-        w("| containers | JVMs | converged after | heap per container | the -Xmx16m JVM: its container / whole heap | threads (all JVMs) |")
-        w("|---|---|---|---|---|---|")
+        w("| containers | JVMs | all built after | converged after | heap per container | the -Xmx16m JVM: its container / whole heap | threads (all JVMs) |")
+        w("|---|---|---|---|---|---|---|")
         for n in sorted(sizes):
             s = sizes[n]
             conv = f"{s['convergence_ms'] / 1000:.2f} s" if s.get("converged") else "**not within 60 s**"
             mb = lambda v: "–" if v is None else f"{v:.2f}"
-            w(f"| {n} | {s['jvms']} | {conv} | {mb(s['heap_per_container_mb'])} MB | "
+            built = "–" if s.get("all_built_ms") is None else f"{s['all_built_ms'] / 1000:.2f} s"
+            w(f"| {n} | {s['jvms']} | {built} | {conv} | {mb(s['heap_per_container_mb'])} MB | "
               f"{mb(s['single_container_jvm_xmx16m_heap_mb'])} / {mb(s['single_container_jvm_total_heap_mb'])} MB | {s['threads_total']} |")
         w("")
     failed = [s for s in sizes.values() if s.get("problems")]

@@ -64,12 +64,17 @@ final class Scale {
         j.send("GO");
       }
       long last = 0;
+      long built = 0;
       boolean converged = true;
       StringBuilder problems = new StringBuilder();
       for (int k = 0; k < jvms.size(); k++) {
         String line;
         try {
           line = jvms.get(k).await("", 90_000);
+          if (line.startsWith("BUILT")) {
+            built = Math.max(built, Long.parseLong(line.substring(6).trim()));
+            line = jvms.get(k).await("", 90_000);
+          }
         } catch (IOException e) {
           line = "JVM " + k + ": " + e.getMessage();
         }
@@ -112,6 +117,7 @@ final class Scale {
       json.field("jvms", jvms.size());
       json.field("converged", converged);
       json.field("convergence_ms", converged ? (last - go) / 1e3 : null);
+      json.field("all_built_ms", built == 0 ? null : (built - go) / 1e3);
       json.field("problems", problems.toString());
       json.field("heap_per_container_mb", bigCount == 0 ? null : Math.round(bigHeap / (double) bigCount / 1e4) / 100.0);
       json.field("single_container_jvm_xmx16m_heap_mb",

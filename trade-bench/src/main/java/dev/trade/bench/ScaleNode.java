@@ -11,9 +11,10 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * One JVM of the scale benchmark: on {@code GO} it builds {@code count} containers (discovery on
- * loopback), each registering one service, and prints {@code CONVERGED <epoch-us>} once every one
- * of them sees all {@code total} services of the system (or {@code TIMEOUT <seen...>} after 60 s).
+ * One JVM of the scale benchmark: on {@code GO} it builds {@code count} containers one after the
+ * other (discovery on loopback), each registering one service, prints {@code BUILT <epoch-us>} when
+ * all are, and {@code CONVERGED <epoch-us>} once every one of them sees all
+ * {@code total} services of the system (or {@code TIMEOUT <seen...>} 60 s after they were built).
  * Then it prints {@code HEAP <baseline> <after> <threads>}: heap in use after full GCs before the
  * containers were built and with them running. Exits when standard input closes (at most 10 min).
  *
@@ -58,6 +59,8 @@ public final class ScaleNode {
     if (!"GO".equals(in.readLine())) {
       return;
     }
+    // One after the other: started all at once, 25 containers per JVM on 2 cores left some of them
+    // without any other container's service after a minute (see docs/benchmarks.md).
     List<TRADEContainer> containers = new ArrayList<>();
     for (int i = 0; i < count; i++) {
       TRADEContainer c = Lifecycle.discovering(TRADEContainer.builder().name(prefix + i), sysId, port)
@@ -65,6 +68,7 @@ public final class ScaleNode {
       c.registerAllServices(new Probe());
       containers.add(c);
     }
+    System.out.println("BUILT " + Clock.epochMicros());
     TRADEServiceConstraints probe = new TRADEServiceConstraints().name("scaleProbe");
     long until = System.nanoTime() + 60_000_000_000L;
     boolean converged = false;
