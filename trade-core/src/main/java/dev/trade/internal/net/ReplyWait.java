@@ -24,6 +24,11 @@ final class ReplyWait {
   /** A running average of recent round trips (ns); racy updates are fine for an estimate. */
   private volatile long roundTrip = MAX_SPIN_NANOS / 2;
 
+  /** How many callers wait now (for tests). */
+  int waiting() {
+    return waiting.get();
+  }
+
   /**
    * Waits for {@code reply} until the deadline.
    *
