@@ -41,9 +41,7 @@ public final class Arguments {
   public static Object[] check(ServiceDescriptor d, List<Class<?>> types, Object[] args)
       throws TRADEBadArgumentsException {
     if (args.length != types.size()) {
-      throw new TRADEBadArgumentsException("Service " + d.signature() + " takes " + types.size()
-          + " argument" + (types.size() == 1 ? "" : "s") + " " + parameterList(d) + " but got "
-          + args.length);
+      throw countMismatch(d, types.size(), args.length);
     }
     Object[] result = args;
     for (int i = 0; i < args.length; i++) {
@@ -60,7 +58,7 @@ public final class Arguments {
       }
       Object widened = type.isPrimitive() ? widen(type, v) : null;
       if (widened == null) {
-        throw bad(d, i, "is a " + v.getClass().getTypeName());
+        throw notA(d, i, v);
       }
       if (result == args) {
         result = args.clone();
@@ -68,6 +66,18 @@ public final class Arguments {
       result[i] = widened;
     }
     return result;
+  }
+
+  // Out of line, as are the other messages: check() runs on every call, and the smaller it is, the
+  // more of the call the JIT compiles into one piece.
+  private static TRADEBadArgumentsException countMismatch(ServiceDescriptor d, int expected,
+      int given) {
+    return new TRADEBadArgumentsException("Service " + d.signature() + " takes " + expected
+        + " argument" + (expected == 1 ? "" : "s") + " " + parameterList(d) + " but got " + given);
+  }
+
+  private static TRADEBadArgumentsException notA(ServiceDescriptor d, int index, Object v) {
+    return bad(d, index, "is a " + v.getClass().getTypeName());
   }
 
   private static Object widen(Class<?> to, Object v) {

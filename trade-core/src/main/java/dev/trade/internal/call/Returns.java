@@ -23,17 +23,31 @@ public final class Returns {
         || declared == null) {
       return;
     }
-    if (declared == void.class) {
-      throw new TRADEBadArgumentsException("Service " + d.signature() + " returns void; call it with"
-          + " void.class or Object.class, not " + requested.getTypeName());
-    }
     Class<?> want = Types.box(requested);
     Class<?> have = Types.box(declared);
     // Narrowing (declared Object, requested String) is allowed and checked on the value.
-    if (!want.isAssignableFrom(have) && !have.isAssignableFrom(want)) {
-      throw new TRADEBadArgumentsException("Service " + d.signature() + " returns "
-          + declared.getTypeName() + ", which is not a " + requested.getTypeName());
+    if (declared == void.class || !want.isAssignableFrom(have) && !have.isAssignableFrom(want)) {
+      throw mismatch(d, requested, declared);
     }
+  }
+
+  // The messages are built out of line: every call runs check() and convert(), and the smaller
+  // they are, the more of the call the JIT compiles into one piece.
+  private static TRADEBadArgumentsException mismatch(ServiceDescriptor d, Class<?> requested,
+      Class<?> declared) {
+    if (declared == void.class) {
+      return new TRADEBadArgumentsException("Service " + d.signature() + " returns void; call it"
+          + " with void.class or Object.class, not " + requested.getTypeName());
+    }
+    return new TRADEBadArgumentsException("Service " + d.signature() + " returns "
+        + declared.getTypeName() + ", which is not a " + requested.getTypeName());
+  }
+
+  private static TRADEBadArgumentsException wrongValue(ServiceDescriptor d, Class<?> requested,
+      Object value) {
+    return new TRADEBadArgumentsException("Service " + d.signature() + " returned "
+        + (value == null ? "null" : "a " + value.getClass().getTypeName()) + ", which is not a "
+        + requested.getTypeName());
   }
 
   /** The value as the requested type, or a bad-arguments error naming both types. */
@@ -45,15 +59,12 @@ public final class Returns {
     }
     if (value == null) {
       if (requested.isPrimitive()) {
-        throw new TRADEBadArgumentsException("Service " + d.signature()
-            + " returned null, which is not a " + requested.getTypeName());
+        throw wrongValue(d, requested, null);
       }
       return null;
     }
-    Class<?> want = Types.box(requested);
-    if (!want.isInstance(value)) {
-      throw new TRADEBadArgumentsException("Service " + d.signature() + " returned a "
-          + value.getClass().getTypeName() + ", which is not a " + requested.getTypeName());
+    if (!Types.box(requested).isInstance(value)) {
+      throw wrongValue(d, requested, value);
     }
     return (T) value;
   }
