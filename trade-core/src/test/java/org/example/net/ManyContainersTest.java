@@ -125,12 +125,15 @@ class ManyContainersTest {
     assertEquals(stillFar.getContainerName() + " answers c0", stillFar.call(String.class, "c0"));
   }
 
-  /** A service of a container {@code from} has no direct link to. */
+  /**
+   * A service of a container {@code from} has no direct link to. Links may still come up while the
+   * overlay settles, and distances follow a new link within the link-state flood interval, so a
+   * service still listed at distance 2 may already be a neighbour's: those are skipped.
+   */
   private static TRADEServiceInfo farService(TRADEContainer from) {
     Set<String> neighbours = Set.copyOf(from.getNeighbours());
     for (TRADEServiceInfo s : from.getAvailableServices(WHO)) {
-      if (s.getDistance() > 1) {
-        assertTrue(!neighbours.contains(s.getContainerId()), s.getContainerName() + " is a neighbour");
+      if (s.getDistance() > 1 && !neighbours.contains(s.getContainerId())) {
         return s;
       }
     }
