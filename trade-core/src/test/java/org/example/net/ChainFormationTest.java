@@ -22,7 +22,7 @@ class ChainFormationTest {
               .property("CONNECTCONTAINERS", a.getServerAddresses().get(0)).build();
           TRADEContainer c = TRADEContainer.builder().name("C")
               .property("CONNECTCONTAINERS", b.getServerAddresses().get(0)).build()) {
-        a.registerAllServices(new ForwardingTest.Named("A"), "gA");
+        a.registerAllServices(new Named("A"), "gA");
         TRADEServiceConstraints k = new TRADEServiceConstraints().inGroups("gA");
         Await.until(Duration.ofSeconds(5), () -> !c.getAvailableServices(k).isEmpty(), "gA on C");
         assertEquals("A answers C", c.getAvailableService(k).call(String.class, "C"), "round " + i);

@@ -6,7 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trade.TRADEContainer;
 import dev.trade.TRADEException;
-import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
 import dev.trade.TRADEServiceUnavailableException;
@@ -20,19 +19,6 @@ import org.junit.jupiter.api.Test;
 class ForwardingTest {
   private static final Duration WAIT = Duration.ofSeconds(10);
   private final List<TRADEContainer> containers = new ArrayList<>();
-
-  public static class Named {
-    private final String name;
-
-    public Named(String name) {
-      this.name = name;
-    }
-
-    @TRADEService
-    public String whoAmI(String caller) {
-      return name + " answers " + caller;
-    }
-  }
 
   @AfterEach
   void close() {

@@ -36,19 +36,6 @@ class ManyContainersTest {
   private static final TRADEServiceConstraints WHO = new TRADEServiceConstraints().name("whoAmI");
   private final List<TRADEContainer> containers = new ArrayList<>();
 
-  public static class Named {
-    private final String name;
-
-    public Named(String name) {
-      this.name = name;
-    }
-
-    @TRADEService
-    public String whoAmI(String caller) {
-      return name + " answers " + caller;
-    }
-  }
-
   public static class LeftRecorder {
     final List<String> left = Collections.synchronizedList(new ArrayList<>());
 

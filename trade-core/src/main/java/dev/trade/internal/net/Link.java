@@ -112,8 +112,7 @@ final class Link {
    *     this thread leaves the read loop)
    */
   boolean serveHere(Runnable call) {
-    Thread self = Thread.currentThread();
-    worker = self;
+    worker = Thread.currentThread();
     long stamp = work.incrementAndGet();
     watch.serving();
     SERVING.set(this);
@@ -153,7 +152,7 @@ final class Link {
     long stamp = work.get();
     boolean serving = (stamp & 1) == 1;
     boolean changed = stamp != watchSeen;
-    if (serving && (!changed || input.seemsToHoldWholeFrame())) {
+    if (serving && (!changed || input.holdsWholeFrame())) {
       handOff(stamp);
     }
     watchSeen = stamp;

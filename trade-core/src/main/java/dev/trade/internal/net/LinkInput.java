@@ -18,16 +18,12 @@ final class LinkInput extends BufferedInputStream {
     return count - pos;
   }
 
-  /** Whether the next frame, length field included, is in the buffer (reading thread only). */
-  boolean holdsWholeFrame() {
-    return wholeFrame(buf, pos, count);
-  }
-
   /**
-   * {@link #holdsWholeFrame} as seen from another thread: a guess from fields that the reading thread
-   * changes meanwhile, made safely (a stale answer only hands reading on sooner or later).
+   * Whether the next frame, length field included, is in the buffer. Exact on the reading thread;
+   * from another thread a guess from fields the reading thread changes meanwhile, made safely (a
+   * stale answer only hands reading on sooner or later).
    */
-  boolean seemsToHoldWholeFrame() {
+  boolean holdsWholeFrame() {
     return wholeFrame(buf, pos, count);
   }
 

@@ -77,9 +77,13 @@ final class RemoteCalls {
   /** Calls a service of another container and waits for its reply until the deadline. */
   Object call(ServiceDescriptor d, Object[] args, long deadlineNanos, ClassLoader loader)
       throws TRADEException {
-    UUID destination = containerIds.computeIfAbsent(d.containerId(), UUID::fromString);
-    if (containerIds.size() > MAX_IDS) {
-      containerIds.clear(); // ids of containers long gone; the live ones come back at once
+    UUID destination = containerIds.get(d.containerId());
+    if (destination == null) {
+      if (containerIds.size() >= MAX_IDS) {
+        containerIds.clear(); // ids of containers long gone; the live ones come back at once
+      }
+      destination = UUID.fromString(d.containerId());
+      containerIds.put(d.containerId(), destination);
     }
     Link link = router.nextHop(destination);
     if (link == null) {
@@ -363,14 +367,8 @@ final class RemoteCalls {
    * its deadline because a reply met a stale route.
    */
   private void deliver(UUID caller, byte[] frame, int attempt) {
-    Link link = router.nextHop(caller);
-    if (link != null) {
-      try {
-        link.send(frame);
-        return;
-      } catch (IOException e) {
-        // Fall through to a later attempt over the recomputed route.
-      }
+    if (sent(router.nextHop(caller), frame)) {
+      return;
     }
     if (attempt >= 6) {
       LOG.log(Level.DEBUG, "reply to {0} dropped: no route", caller);
