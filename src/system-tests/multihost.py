@@ -38,17 +38,17 @@ IN_PRIVATE_MOUNTS = "TRADE_SYSTEM_TEST_PRIVATE_MOUNTS"
 
 # Bounds. A killed process's sockets are closed by its kernel, so its neighbours see the loss at
 # once; a silent one is declared gone after FAILURETIMEOUT (default 3000 ms), checked every
-# HEARTBEATINTERVAL (default 250 ms).
+# HEARTBEATINTERVAL (default 1000 ms).
 KILL_DETECTION_MS = 1000
 FAILURE_TIMEOUT_MS = 3000
-HEARTBEAT_MS = 250
+HEARTBEAT_MS = 1000
 # A silent peer is declared gone at the first heartbeat tick after FAILURETIMEOUT without a frame
-# from it. An idle link carries a ping every one or two HEARTBEATINTERVALs (one is sent when the
-# link has been idle that long, checked every interval), so its last frame came up to two
-# intervals before it fell silent: by design it leaves 2500-3250 ms after it fell silent. The
+# from it. An idle link carries a ping every HEARTBEATINTERVAL (one is sent when the link has been
+# idle for half an interval, checked every interval), so its last frame came up to one interval
+# before it fell silent: by design it leaves 2000-3000 ms after it fell silent. The
 # bounds allow one interval more below, and more above for a loaded machine, where timers run
 # late (4950 ms was measured on an overloaded 2-core machine).
-SILENT_DETECTION_MIN_MS = FAILURE_TIMEOUT_MS - 3 * HEARTBEAT_MS
+SILENT_DETECTION_MIN_MS = FAILURE_TIMEOUT_MS - 2 * HEARTBEAT_MS
 SILENT_DETECTION_MS = FAILURE_TIMEOUT_MS + 2000
 STARTUP_S = 20          # JVM start, discovery, links, tables: normally about 1 s
 REJOIN_S = 15           # a frozen container rejoins at the next announcement (BROADCASTINTERVAL 3 s)

@@ -2,16 +2,25 @@ package dev.trade.internal.net;
 
 import java.io.IOException;
 import java.time.Duration;
+import java.util.ArrayList;
 import java.util.Collection;
+import java.util.List;
 import java.util.concurrent.ExecutorService;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 
 /**
  * Keeps links alive and finds silent peers: every {@code HEARTBEATINTERVAL} each link that sent
- * nothing for that long sends a PING, and a link that received nothing for {@code FAILURETIMEOUT}
- * is closed. A closed or reset socket is noticed at once by the link's reader; this catches the
- * silent cases (a frozen process, a pulled cable). Safe for concurrent use.
+ * nothing for half that long sends a PING (so an idle link carries one per interval), and a link
+ * that received nothing for {@code FAILURETIMEOUT} is closed. A closed or reset socket is noticed
+ * at once by the link's reader; this catches the silent cases (a frozen process, a pulled cable).
+ *
+ * <p>Silence is judged only while this container itself runs on time: a beat that comes more than
+ * half an interval late means this process was stalled (a long GC pause, a suspended VM, an
+ * overloaded host), and the frames its peers sent meanwhile still wait unread in the socket
+ * buffers. Every link then gets a full {@code FAILURETIMEOUT} from the end of the stall, so that
+ * a pause here never closes the links of healthy peers. Thread-safe: beats run on the timer.
  */
 final class Heartbeat {
   private static final byte[] PING = Frames.finish(Frames.start(Wire.PING, 0));
@@ -21,6 +30,10 @@ final class Heartbeat {
   private final long silence;
   private final ScheduledExecutorService timer;
   private final ExecutorService workers;
+  // Timer thread only.
+  private long lastBeat;
+  /** When the last stall of this process ended (nanoTime); silence counts from there at most. */
+  private volatile long resumed;
 
   /** @param links the live links, read at every beat */
   Heartbeat(Collection<Link> links, Duration interval, Duration silence,
@@ -33,15 +46,23 @@ final class Heartbeat {
   }
 
   void start() {
-    timer.scheduleAtFixedRate(this::beat, interval, interval, TimeUnit.NANOSECONDS);
+    lastBeat = System.nanoTime();
+    resumed = lastBeat;
+    timer.scheduleAtFixedRate(() -> beat(System.nanoTime()), interval, interval,
+        TimeUnit.NANOSECONDS);
   }
 
-  private void beat() {
-    long now = System.nanoTime();
+  /** One beat at {@code now} (nanoTime); package-private for tests, which pass their own times. */
+  void beat(long now) {
+    if (now - lastBeat > interval + interval / 2) {
+      resumed = now;
+    }
+    lastBeat = now;
+    List<Link> idle = null;
     for (Link l : links) {
-      long quiet = now - l.lastReceived;
+      long quiet = now - Math.max(l.lastReceived, resumed);
       if (quiet >= silence) {
-        closeSilent(l, quiet);
+        closeSilent(l, now - l.lastReceived);
         continue;
       }
       if (silence - quiet < interval) {
@@ -49,24 +70,48 @@ final class Heartbeat {
         // silent peer is declared gone after FAILURETIMEOUT, not up to one interval later.
         timer.schedule(() -> checkSilence(l), silence - quiet, TimeUnit.NANOSECONDS);
       }
-      if (now - l.lastSent >= interval) {
-        // On a worker: a ping that finds a large frame being written must not hold up the
-        // heartbeats (and silence checks) of every other link.
-        workers.execute(() -> {
+      if (now - l.lastSent >= interval / 2 && !l.pinging) {
+        if (idle == null) {
+          idle = new ArrayList<>();
+        }
+        idle.add(l);
+      }
+    }
+    if (idle != null) {
+      ping(idle);
+    }
+  }
+
+  /**
+   * Pings on one worker, not on the timer: a ping that finds a peer's socket buffer full blocks
+   * until the peer reads or the link closes, and the timer must go on beating for every other
+   * link. A link whose ping still blocks is skipped by later beats, which ping the others on
+   * another worker. One task per beat, not one per link: hundreds of links would otherwise start
+   * as many threads.
+   */
+  private void ping(List<Link> idle) {
+    try {
+      workers.execute(() -> {
+        for (Link l : idle) {
+          l.pinging = true;
           try {
             l.send(PING);
           } catch (IOException e) {
             // send() closed the link; its reader reports it.
+          } finally {
+            l.pinging = false;
           }
-        });
-      }
+        }
+      });
+    } catch (RejectedExecutionException e) {
+      // The container is closing.
     }
   }
 
   private void checkSilence(Link l) {
-    long quiet = System.nanoTime() - l.lastReceived;
-    if (!l.isClosed() && quiet >= silence) {
-      closeSilent(l, quiet);
+    long now = System.nanoTime();
+    if (!l.isClosed() && now - Math.max(l.lastReceived, resumed) >= silence) {
+      closeSilent(l, now - l.lastReceived);
     }
   }
 

@@ -40,7 +40,7 @@ class SettingsTest {
     assertEquals("diarc", d.tradeSysId());
     assertFalse(d.copyDataForLocalInvokes());
     assertEquals(Duration.ofSeconds(30), d.callTimeout());
-    assertEquals(Duration.ofMillis(250), d.heartbeatInterval());
+    assertEquals(Duration.ofMillis(1000), d.heartbeatInterval());
     assertEquals(Duration.ofMillis(3000), d.failureTimeout());
     assertEquals(DiscoveryRange.LOCALHOST, d.discoveryRange());
     assertEquals(0, d.discoveryRange().ttl());

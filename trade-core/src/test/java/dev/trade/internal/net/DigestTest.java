@@ -55,7 +55,7 @@ class DigestTest {
     List<Integer> types = new ArrayList<>();
     long deadline = System.nanoTime() + window.toNanos();
     while (System.nanoTime() - deadline < 0) {
-      byte[] f = p.readFrame(); // the provider pings every 250 ms
+      byte[] f = p.readFrame(); // the provider pings every second
       if (f[0] != Wire.PING) {
         types.add((int) f[0]);
       }
