@@ -11,19 +11,20 @@ import java.time.Duration;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.Executors;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.LongAdder;
 import java.util.function.Supplier;
 
 /**
  * The announcing half of {@link Discovery}: one daemon scheduler thread that sends an
- * announcement per interface in a burst at start, then every interval, on request, and in answer
- * to a newcomer.
+ * announcement per interface to the group in a burst at start, then every interval and on
+ * request; and one straight to a newcomer, in answer to its first announcement.
  *
  * <p>Every send happens under {@code lock}, and so do the switches: once {@link #setOn(boolean)
  * setOn(false)} or {@link #close()} has returned, nothing more is sent. Thread-safe.
@@ -44,7 +45,8 @@ final class Announcer {
   private final ScheduledExecutorService scheduler;
   private final AtomicLong sequence = new AtomicLong();
   private final LongAdder sent = new LongAdder();
-  private final AtomicBoolean answerPending = new AtomicBoolean();
+  /** Newcomers with an answer pending, by the address their announcement came from. */
+  private final Set<InetSocketAddress> answering = ConcurrentHashMap.newKeySet();
   private final Object lock = new Object();
   // Guarded by lock: the last state logged per interface, so that only changes are logged.
   private final Map<String, String> states = new HashMap<>();
@@ -75,7 +77,7 @@ final class Announcer {
   void start(Duration interval) {
     scheduleBurst();
     long ms = interval.toMillis();
-    scheduler.scheduleWithFixedDelay(this::announce, ms, ms, TimeUnit.MILLISECONDS);
+    scheduler.scheduleWithFixedDelay(this::announceToGroup, ms, ms, TimeUnit.MILLISECONDS);
   }
 
   /** Turning it on sends a burst, as at start. */
@@ -95,23 +97,32 @@ final class Announcer {
 
   void announceNow() {
     try {
-      scheduler.execute(this::announce);
+      scheduler.execute(this::announceToGroup);
     } catch (RejectedExecutionException e) {
       // Closed: nothing to announce.
     }
   }
 
   /**
-   * Announces soon, in answer to a container heard for the first time: without it, a newcomer
-   * would learn about this container only at its next steady announcement, seconds away.
-   * Answers requested while one is pending share it, so a crowd of newcomers costs one packet.
+   * Announces soon to {@code newcomer} alone, in answer to its first announcement: without it, a
+   * newcomer would learn about this container only at its next steady announcement, seconds away.
+   * The answer goes to the socket the newcomer sent from, not to the group: the others know this
+   * container already, and with n containers a multicast answer to each of n joins would cost
+   * n³ packets received. It goes out on the interface whose network holds the newcomer's address
+   * and lists that interface's addresses; a newcomer on none of them hears the next steady
+   * announcement instead.
    */
-  void answer() {
-    if (answerPending.compareAndSet(false, true)) {
+  void answer(InetSocketAddress newcomer) {
+    if (answering.add(newcomer)) {
       try {
         scheduler.execute(() -> {
-          answerPending.set(false);
-          announce();
+          answering.remove(newcomer);
+          for (int i = 0; i < channels.size(); i++) {
+            if (Interfaces.reaches(interfaces.get(i), newcomer.getAddress())) {
+              announce(i, newcomer);
+              return;
+            }
+          }
         });
       } catch (RejectedExecutionException e) {
         // Closed: nothing to announce.
@@ -135,15 +146,22 @@ final class Announcer {
   private void scheduleBurst() {
     try {
       for (long delay : BURST_MILLIS) {
-        scheduler.schedule(this::announce, delay, TimeUnit.MILLISECONDS);
+        scheduler.schedule(this::announceToGroup, delay, TimeUnit.MILLISECONDS);
       }
     } catch (RejectedExecutionException e) {
       // Closed meanwhile.
     }
   }
 
-  /** One packet per interface. Never throws: a periodic task that throws is silently cancelled. */
-  private void announce() {
+  /** One packet per interface to the group. Never throws: a periodic task that throws is cancelled. */
+  private void announceToGroup() {
+    for (int i = 0; i < channels.size(); i++) {
+      announce(i, target);
+    }
+  }
+
+  /** One packet on the {@code i}th interface to {@code to}. Never throws. */
+  private void announce(int i, InetSocketAddress to) {
     synchronized (lock) {
       if (!on || closed) {
         return;
@@ -155,24 +173,25 @@ final class Announcer {
         LOG.log(Level.WARNING, "Discovery could not get the listen addresses to announce", e);
         return;
       }
-      long now = System.currentTimeMillis();
-      for (int i = 0; i < channels.size(); i++) {
-        NetworkInterface nif = Interfaces.refresh(interfaces.get(i));
-        List<InetSocketAddress> mine = Interfaces.announceable(nif, listen);
-        if (mine.isEmpty()) {
-          note(nif, Level.INFO, "nothing to announce: " + (listen.isEmpty()
-              ? "no listen addresses" : "none of the listen addresses " + Announcement.format(listen) + " is on it"));
-          continue;
+      NetworkInterface nif = Interfaces.refresh(interfaces.get(i));
+      List<InetSocketAddress> mine = Interfaces.announceable(nif, listen);
+      if (mine.isEmpty()) {
+        note(nif, Level.INFO, "nothing to announce: " + (listen.isEmpty()
+            ? "no listen addresses" : "none of the listen addresses " + Announcement.format(listen) + " is on it"));
+        return;
+      }
+      Announcement a = new Announcement(Packets.VERSION, systemId, containerId, containerName,
+          mine, sequence.incrementAndGet(), System.currentTimeMillis());
+      try {
+        // Non-blocking (the receiver reads answers from this channel): 0 means no room just now,
+        // and the packet is lost, as a datagram may be anyway.
+        if (channels.get(i).send(ByteBuffer.wrap(a.encode(key)), to) == 0) {
+          throw new IOException("the socket's send buffer is full");
         }
-        Announcement a = new Announcement(Packets.VERSION, systemId, containerId, containerName,
-            mine, sequence.incrementAndGet(), now);
-        try {
-          channels.get(i).send(ByteBuffer.wrap(a.encode(key)), target);
-          sent.increment();
-          note(nif, Level.INFO, "announcing " + Announcement.format(mine) + " as '" + containerName + "'");
-        } catch (IOException | RuntimeException e) {
-          note(nif, Level.WARNING, "cannot send: " + e);
-        }
+        sent.increment();
+        note(nif, Level.INFO, "announcing " + Announcement.format(mine) + " as '" + containerName + "'");
+      } catch (IOException | RuntimeException e) {
+        note(nif, Level.WARNING, "cannot send: " + e);
       }
     }
   }

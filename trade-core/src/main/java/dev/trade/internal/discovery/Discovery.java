@@ -23,12 +23,13 @@ import java.util.function.Supplier;
  *
  * <p>Announcing: an {@link Announcement} of this container's listen addresses goes to the group on
  * each chosen interface in a quick burst at start (0, 20, 50, 100 and 200 ms), then every
- * interval, once more on {@link #announceNow()}, and in answer to the first announcement heard
- * from a container (so that a newcomer learns about the others in milliseconds too). Each interface's packet lists only that
+ * interval, and once more on {@link #announceNow()}. The first announcement heard from a container
+ * is answered straight to the socket it came from (so that a newcomer learns about the others in
+ * milliseconds too, and the others do not hear every answer). Each interface's packet lists only that
  * interface's addresses, never a wildcard; an interface with none gets no packet, so a container
  * without listen addresses listens but announces nothing.
  *
- * <p>Listening: a daemon thread receives from the group. A packet that fails a check is dropped,
+ * <p>Listening: a daemon thread receives from the group, and answers on the sending sockets. A packet that fails a check is dropped,
  * counted by {@link Reason} ({@link #dropCounts()}) and logged at DEBUG, with a rate-limited INFO
  * or WARNING that says why ("other system id 'x'", "bad HMAC: wrong CREDENTIALS?"). Every other
  * announcement goes to the {@link Listener}, on that thread.
@@ -104,9 +105,17 @@ public final class Discovery implements AutoCloseable {
     String tag = "[" + b.containerName + "]";
     this.announcer = new Announcer(b.systemId, b.containerId, b.containerName, key, target,
         b.addresses, interfaces, senders, b.broadcast, "trade-discovery-send" + tag);
-    this.receiver = new Receiver(receiveChannel, b.systemId, b.containerId, key, b.listener,
-        announcer::answer, b.observer, b.maxClockSkew, b.reportInterval, b.discovery,
-        "trade-discovery-receive" + tag);
+    Receiver r;
+    try {
+      r = new Receiver(receiveChannel, senders, b.systemId, b.containerId, key, b.listener,
+          announcer::answer, b.observer, b.maxClockSkew, b.reportInterval, b.discovery,
+          "trade-discovery-receive" + tag);
+    } catch (IOException | RuntimeException e) {
+      announcer.close();
+      Sockets.closeQuietly(receiveChannel);
+      throw e;
+    }
+    this.receiver = r;
     receiver.start();
     announcer.start(b.interval);
     // Logged after starting: the first log line of a JVM sets up its logging (tens of ms), which the

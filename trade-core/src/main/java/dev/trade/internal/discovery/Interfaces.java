@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.net.Inet4Address;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
+import java.net.InterfaceAddress;
 import java.net.NetworkInterface;
 import java.net.SocketException;
 import java.util.ArrayList;
@@ -118,6 +119,35 @@ final class Interfaces {
     } catch (SocketException e) {
       return nif;
     }
+  }
+
+  /**
+   * Whether {@code a} is on a network {@code nif} is attached to (within the prefix of one of its
+   * addresses), so that a datagram to it leaves by {@code nif}: where an answer to a newcomer
+   * heard on {@code nif} can go.
+   */
+  static boolean reaches(NetworkInterface nif, InetAddress a) {
+    for (InterfaceAddress ia : nif.getInterfaceAddresses()) {
+      InetAddress own = ia.getAddress();
+      if (own.getClass() != a.getClass()) {
+        continue;
+      }
+      if (own.isLoopbackAddress() && a.isLoopbackAddress()) {
+        return true;
+      }
+      byte[] x = own.getAddress();
+      byte[] y = a.getAddress();
+      int bits = ia.getNetworkPrefixLength();
+      boolean same = true;
+      for (int i = 0; i < x.length && bits > 0 && same; i++, bits -= 8) {
+        int mask = bits >= 8 ? 0xff : (0xff << (8 - bits)) & 0xff;
+        same = (x[i] & mask) == (y[i] & mask);
+      }
+      if (same) {
+        return true;
+      }
+    }
+    return false;
   }
 
   private static boolean isOn(InetAddress a, List<InetAddress> own) {

@@ -72,6 +72,7 @@ final class Sockets {
    * A socket that sends to the group on {@code nif} only, with the range's TTL, looping its
    * packets back to this host so that containers on the same machine hear each other. For
    * LOCALHOST it is also bound to the loopback address, so that it cannot send from anything else.
+   * Other containers answer this container's announcements to it, unicast.
    */
   static DatagramChannel sender(ProtocolFamily family, NetworkInterface nif, Discovery.Range range)
       throws IOException {
@@ -83,6 +84,8 @@ final class Sockets {
       if (range == Discovery.Range.LOCALHOST) {
         ch.bind(new InetSocketAddress(family == StandardProtocolFamily.INET
             ? InetAddress.getByName("127.0.0.1") : InetAddress.getByName("::1"), 0));
+      } else {
+        ch.bind(null); // a port now, where answers from the others arrive
       }
       return ch;
     } catch (IOException | RuntimeException e) {

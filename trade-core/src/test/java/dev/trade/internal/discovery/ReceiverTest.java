@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import dev.trade.internal.discovery.BadPacketException.Reason;
 import java.io.IOException;
 import java.net.InetAddress;
+import java.net.InetSocketAddress;
 import java.nio.channels.DatagramChannel;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -18,7 +19,8 @@ import org.junit.jupiter.api.Test;
 
 /** The receive pipeline, packet by packet, without the network (the channel is never bound). */
 class ReceiverTest {
-  private static final InetAddress FROM = InetAddress.getLoopbackAddress();
+  private static final InetSocketAddress FROM =
+      new InetSocketAddress(InetAddress.getLoopbackAddress(), 40_000);
 
   private final Recorder recorder = new Recorder();
   private final AtomicInteger newcomers = new AtomicInteger();
@@ -75,8 +77,8 @@ class ReceiverTest {
   }
 
   private Receiver receiver(Discovery.Listener listener) throws IOException {
-    return new Receiver(DatagramChannel.open(), SYSTEM, "me", KEY, listener,
-        newcomers::incrementAndGet, recorder, Duration.ofSeconds(30), Duration.ofSeconds(60), true,
+    return new Receiver(DatagramChannel.open(), List.of(), SYSTEM, "me", KEY, listener,
+        from -> newcomers.incrementAndGet(), recorder, Duration.ofSeconds(30), Duration.ofSeconds(60), true,
         "test-receiver");
   }
 }
