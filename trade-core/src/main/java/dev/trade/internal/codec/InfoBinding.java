@@ -25,6 +25,20 @@ public interface InfoBinding {
         }
       };
 
+  /** For service tables: descriptors travel as themselves and stay descriptors. */
+  InfoBinding DESCRIPTORS =
+      new InfoBinding() {
+        @Override
+        public ServiceDescriptor describe(Object value) {
+          return value instanceof ServiceDescriptor ? (ServiceDescriptor) value : null;
+        }
+
+        @Override
+        public Object bind(ServiceDescriptor descriptor) {
+          return descriptor;
+        }
+      };
+
   /**
    * Returns the descriptor of {@code value} if it is a {@code TRADEServiceInfo}, or null if it is
    * anything else. Must be cheap: the encoder asks it for every value of a class it does not know.

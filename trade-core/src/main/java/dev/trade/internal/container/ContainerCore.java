@@ -95,26 +95,13 @@ public final class ContainerCore implements ServiceCaller {
     }
   }
 
-  /** Service tables travel as descriptors and stay descriptors. */
-  private static final InfoBinding DESCRIPTORS = new InfoBinding() {
-    @Override
-    public ServiceDescriptor describe(Object value) {
-      return value instanceof ServiceDescriptor ? (ServiceDescriptor) value : null;
-    }
-
-    @Override
-    public Object bind(ServiceDescriptor descriptor) {
-      return descriptor;
-    }
-  };
-
   private static boolean networked(Settings s) {
     return s.startAcceptingConnections() || !s.connectContainers().isEmpty()
         || s.startDiscovery() || s.startBroadcast();
   }
 
   private Network startNetwork() {
-    Codec tables = new Codec(allowList, limits, DESCRIPTORS);
+    Codec tables = new Codec(allowList, limits, InfoBinding.DESCRIPTORS);
     Network n = new Network(settings, uuid, name, host, registry, codec, tables, new Network.Host() {
       @Override
       public LocalService local(long serviceId) {

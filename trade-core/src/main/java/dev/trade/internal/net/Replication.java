@@ -7,8 +7,6 @@ import dev.trade.internal.registry.Entry;
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
 import java.io.IOException;
-import java.lang.System.Logger;
-import java.lang.System.Logger.Level;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
@@ -23,18 +21,20 @@ import java.util.function.Consumer;
  * Keeps every container's view of the system in step: link states (for routing) and service
  * tables, each versioned by its owner and flooded over all links. A frame that changes nothing here
  * (a version already known) is not passed on, so floods end. A new neighbour gets what it lacks
- * ({@link Digest}), or everything if it does not exchange digests.
+ * ({@link Digest}), or everything if it does not exchange digests. Tables of containers without a
+ * route from here wait until they have one ({@link Tables}).
  *
  * <p>Everything but {@link #nextHop} and {@link #localChanged} runs on the network's control thread.
  */
 final class Replication {
-  private static final Logger LOG = System.getLogger("dev.trade.net");
   private static final int MAX_TEXT = 1024;
-  private static final int FAR = Integer.MAX_VALUE / 2;
   /** How long the link state of an unreachable container is kept (it may be reachable soon). */
   private static final long STATE_GRACE_NANOS = 60_000_000_000L;
   /** The least time between two floods of this container's own link state, but see linkDown. */
   static final long OWN_FLOOD_GAP_NANOS = 50_000_000L;
+  /** The least time between two route computations for other containers' link states. */
+  private static final long ROUTES_GAP_NANOS = 20_000_000L;
+  private static final long PRUNE_GAP_NANOS = 1_000_000_000L;
 
   private final String selfId;
   private final Registry registry;
@@ -43,6 +43,9 @@ final class Replication {
   private final RemoteCalls calls;
   private final Topology topology;
   private volatile Map<UUID, UUID> nextHops = Map.of();
+  /** The routes {@link #nextHops} and the registry follow (the last computed). Control thread. */
+  private Map<String, Topology.Route> routed = Map.of();
+  private final Map<String, UUID> ids = new HashMap<>();
 
   /** Runs a task on the control thread after a delay in nanoseconds. */
   interface Scheduler {
@@ -57,6 +60,9 @@ final class Replication {
   private long ownFlooded;
   private boolean ownFloodPending;
   private boolean topologyPending;
+  /** When routes were last computed, and when unreachable containers were last pruned (nanoTime). */
+  private long routesAt;
+  private long prunedAt;
   private Set<String> ownFloodedNeighbours = Set.of();
   /**
    * New links whose peer's DIGEST has not been answered yet. They get no floods until then: the
@@ -65,6 +71,7 @@ final class Replication {
    */
   private final Set<Link> unanswered = new HashSet<>();
   private final FloodFilter filter;
+  private final Tables tables;
 
   /**
    * @param holdDownNanos how long a container that became unreachable stays so unless it proves
@@ -83,6 +90,7 @@ final class Replication {
     this.calls = calls;
     this.topology = new Topology(selfId, holdDownNanos);
     this.filter = new FloodFilter(topology, registry);
+    this.tables = new Tables(registry, STATE_GRACE_NANOS);
   }
 
   /** See {@link FloodFilter#isStale}. Any thread. */
@@ -101,17 +109,18 @@ final class Replication {
     if (link.digests) {
       // What the peer lacks follows its own DIGEST (received below).
       unanswered.add(link);
-      send(link, Digest.frame(topology.states(), registry.localTable(), registry.remoteTables()));
+      send(link, Digest.frame(topology.states(), registry.localTable(), tables.known()));
       return;
     }
     for (Topology.LinkState s : topology.states()) {
       send(link, StateFrames.links(s));
     }
     send(link, StateFrames.table(tableCodec, registry.localTable()));
-    for (Registry.Table t : registry.remoteTables()) {
+    for (Registry.Table t : tables.known()) {
       send(link, StateFrames.table(tableCodec, t));
     }
   }
+
 
   void linkDown(Link link) {
     unanswered.remove(link);
@@ -232,33 +241,28 @@ final class Replication {
         case Wire.TABLE: {
           String owner = in.readText(MAX_TEXT);
           long version = in.readLong();
-          if (registry.isStale(owner, version)) {
-            break; // not decoded, and no need to bring routes up to date for it
+          if (tables.isStale(owner, version)) {
+            break; // not decoded
           }
           List<ServiceDescriptor> services = StateFrames.descriptors(tableCodec.read(in, loader()));
-          routesNow();
-          if (topology.isHeldDown(owner)) {
-            break; // a stale copy of a container that just went away
+          // Routes as computed last: a table whose owner is not routable yet is listed once it is.
+          if (!tables.table(new Registry.Table(owner, version, services), routed.get(owner),
+              System.nanoTime())) {
+            break;
           }
-          if (registry.applyTable(new Registry.Table(owner, version, services), distance(owner))) {
-            ownStateBefore(from);
-            flood(StateFrames.wrap(Wire.TABLE, payload), from);
-          }
+          ownStateBefore(from);
+          flood(StateFrames.wrap(Wire.TABLE, payload), from);
           break;
         }
         case Wire.DELTA: {
           String owner = in.readText(MAX_TEXT);
           long version = in.readLong();
-          if (registry.isStale(owner, version)) {
+          if (tables.isStale(owner, version)) {
             break;
           }
           List<ServiceDescriptor> add = StateFrames.descriptors(tableCodec.read(in, loader()));
           List<Long> remove = StateFrames.ids(tableCodec.read(in, loader()));
-          routesNow();
-          if (topology.isHeldDown(owner)) {
-            break;
-          }
-          Registry.DeltaResult r = registry.applyDelta(owner, version, add, remove, distance(owner));
+          Registry.DeltaResult r = tables.delta(owner, version, add, remove, routed.get(owner));
           if (r == Registry.DeltaResult.APPLIED) {
             ownStateBefore(from);
             flood(StateFrames.wrap(Wire.DELTA, payload), from);
@@ -272,7 +276,7 @@ final class Replication {
           if (owner.equals(selfId)) {
             send(from, StateFrames.table(tableCodec, registry.localTable()));
           } else {
-            for (Registry.Table t : registry.remoteTables()) {
+            for (Registry.Table t : tables.known()) {
               if (t.containerId().equals(owner)) {
                 send(from, StateFrames.table(tableCodec, t));
               }
@@ -285,7 +289,7 @@ final class Replication {
             throw new IOException("a second DIGEST, or one on a link without digests");
           }
           for (byte[] frame : Digest.answer(payload, topology.states(), registry.localTable(),
-              registry.remoteTables(), tableCodec)) {
+              tables.known(), tableCodec)) {
             send(from, frame);
           }
           break;
@@ -300,44 +304,52 @@ final class Replication {
 
   /**
    * Routes, distances and departures follow received link states once the frames queued on the
-   * control thread now have been handled, not after each: at start-up every container's states
-   * arrive in bursts, and each computation walks the whole graph.
+   * control thread now have been handled, not after each, and at most once per
+   * {@link #ROUTES_GAP_NANOS}: at start-up every container's states arrive in bursts, and each
+   * computation walks the whole graph. Changes of this container's own links apply at once.
    */
   private void topologyChangedSoon() {
     if (!topologyPending) {
       topologyPending = true;
-      scheduler.schedule(this::routesNow, 0);
-    }
-  }
-
-  /** Brings routes up to date before a table is applied: a table's owner must be routable. */
-  private void routesNow() {
-    if (topologyPending) {
-      afterTopologyChange();
+      long wait = routesAt + ROUTES_GAP_NANOS - System.nanoTime();
+      scheduler.schedule(() -> {
+        if (topologyPending) {
+          afterTopologyChange();
+        }
+      }, Math.max(0, wait));
     }
   }
 
   private void afterTopologyChange() {
     topologyPending = false;
+    long now = System.nanoTime();
+    routesAt = now;
     Map<String, Topology.Route> routes = topology.routes();
+    if (now - prunedAt >= PRUNE_GAP_NANOS) {
+      prunedAt = now;
+      topology.pruneUnreachable(now, STATE_GRACE_NANOS);
+      filter.pruned();
+      tables.prune(now);
+      ids.keySet().retainAll(routes.keySet());
+    }
+    if (routes == routed) {
+      return; // the same routes as computed last time: nothing follows
+    }
+    Map<String, Topology.Route> was = routed;
+    routed = routes;
     Map<UUID, UUID> hops = new HashMap<>();
-    Map<String, Integer> distances = new HashMap<>();
+    Map<String, Integer> moved = new HashMap<>();
     for (Map.Entry<String, Topology.Route> r : routes.entrySet()) {
-      hops.put(UUID.fromString(r.getKey()), UUID.fromString(r.getValue().nextHop()));
-      distances.put(r.getKey(), r.getValue().distance());
+      hops.put(id(r.getKey()), id(r.getValue().nextHop()));
+      Topology.Route before = was.get(r.getKey());
+      if (before != null && before.distance() != r.getValue().distance()) {
+        moved.put(r.getKey(), r.getValue().distance());
+      }
     }
     Map<UUID, UUID> before = nextHops;
     nextHops = Map.copyOf(hops);
-    registry.updateDistances(distances);
-    topology.pruneUnreachable(System.nanoTime(), STATE_GRACE_NANOS);
-    filter.pruned();
+    tables.follow(routes, moved, now);
     List<String> known = registry.remoteContainers();
-    for (String owner : known) {
-      if (!routes.containsKey(owner)) {
-        LOG.log(Level.INFO, "container {0} left or is not reachable any more", owner);
-        registry.removeContainer(owner);
-      }
-    }
     for (UUID gone : before.keySet()) {
       if (!hops.containsKey(gone)) {
         calls.failTo(gone, "container " + gone + " left or is not reachable any more");
@@ -365,10 +377,11 @@ final class Replication {
     }
   }
 
-  private int distance(String owner) {
-    Topology.Route r = topology.route(owner);
-    return r == null ? FAR : r.distance();
+  /** The id as a UUID, parsed once per container. */
+  private UUID id(String container) {
+    return ids.computeIfAbsent(container, UUID::fromString);
   }
+
 
   private static ClassLoader loader() {
     return Replication.class.getClassLoader();

@@ -106,7 +106,10 @@ final class Topology {
     return routes.get(container);
   }
 
-  /** Reachable containers other than this one, with their routes. */
+  /**
+   * Reachable containers other than this one, with their routes: the same instance as last time
+   * when they did not change.
+   */
   Map<String, Route> routes() {
     fresh();
     return routes;
@@ -179,7 +182,9 @@ final class Topology {
         }
       }
     }
-    routes = Collections.unmodifiableMap(result);
+    if (!result.equals(before)) {
+      routes = Collections.unmodifiableMap(result); // unchanged routes keep their instance
+    }
     holdDown.keySet().removeAll(result.keySet()); // a direct link proves it alive
     for (String gone : before.keySet()) {
       if (!result.containsKey(gone)) {

@@ -251,16 +251,26 @@ public final class Registry {
     return DeltaResult.APPLIED;
   }
 
-  /** Forgets a container that left or became unreachable; its services go away everywhere here. */
-  public synchronized void removeContainer(String owner) {
+  /**
+   * Forgets a container that left or became unreachable; its services go away everywhere here.
+   *
+   * @return its table as it was, or null when none was known
+   */
+  public synchronized Table removeContainer(String owner) {
     if (owner.equals(containerId)) {
-      return;
+      return null;
     }
-    versions.remove(owner);
+    Long version = versions.remove(owner);
     Map<Long, Entry> table = tables.remove(owner);
-    if (table != null && !table.isEmpty()) {
+    if (table == null) {
+      return null;
+    }
+    List<ServiceDescriptor> services = new ArrayList<>();
+    table.values().forEach(e -> services.add(e.descriptor()));
+    if (!table.isEmpty()) {
       publish(List.of(), new ArrayList<>(table.values()));
     }
+    return new Table(owner, version == null ? 0L : version, services);
   }
 
   /** Containers whose tables are known here, this one excluded. */
@@ -270,15 +280,19 @@ public final class Registry {
     return result;
   }
 
-  /** Updates how far each container is (reorders lookups; no joined/left events). */
+  /**
+   * Updates how far the given containers are (reorders lookups; no joined/left events); others
+   * keep theirs.
+   */
   public synchronized void updateDistances(Map<String, Integer> distances) {
     boolean changed = false;
-    for (Map.Entry<String, Map<Long, Entry>> t : tables.entrySet()) {
-      Integer d = distances.get(t.getKey());
-      if (d == null || t.getKey().equals(containerId)) {
+    for (Map.Entry<String, Integer> owner : distances.entrySet()) {
+      Map<Long, Entry> table = tables.get(owner.getKey());
+      if (table == null || owner.getKey().equals(containerId)) {
         continue;
       }
-      for (Map.Entry<Long, Entry> e : t.getValue().entrySet()) {
+      int d = owner.getValue();
+      for (Map.Entry<Long, Entry> e : table.entrySet()) {
         Entry moved = e.getValue().withDistance(d);
         if (moved != e.getValue()) {
           e.setValue(moved);
