@@ -43,6 +43,8 @@ final class Link {
   private static final ThreadLocal<Link> SERVING = new ThreadLocal<>();
 
   final UUID peerId;
+  /** {@link #peerId} as text, as link states and tables name containers. */
+  final String peerKey;
   final String peerName;
   final boolean initiatedHere;
   /** Whether both sides exchange DIGEST, not their full state, when the link comes up. */
@@ -81,6 +83,7 @@ final class Link {
   Link(Socket socket, Handshake.Peer peer, boolean initiatedHere, int maxFrame) throws IOException {
     this.socket = socket;
     this.peerId = peer.containerId();
+    this.peerKey = peerId.toString();
     this.peerName = peer.name();
     this.initiatedHere = initiatedHere;
     this.digests = peer.digests();
@@ -187,6 +190,25 @@ final class Link {
       deferred = true;
       return;
     }
+    writeQueued();
+  }
+
+  /**
+   * Queues one complete frame without writing it: {@link #flushQueued()}, or the next
+   * {@link #send}, writes it with whatever else is queued then, in one system call. For a thread
+   * that sends many frames over many links in a row (the control thread's floods).
+   *
+   * @throws IOException when the link is closed
+   */
+  void queue(byte[] frame) throws IOException {
+    if (closed.get()) {
+      throw new IOException("link to " + peerName + " is closed");
+    }
+    queue.offer(frame);
+  }
+
+  /** Writes what {@link #queue} queued, unless another thread is writing: that one writes it. */
+  void flushQueued() throws IOException {
     writeQueued();
   }
 

@@ -80,7 +80,8 @@ public final class Network implements AutoCloseable {
     this.self = self;
     this.name = name;
     this.registry = registry;
-    this.control = Executors.newSingleThreadExecutor(daemon("trade-control-" + name));
+    // The frames of a burst of state changes leave together (one system call per link).
+    this.control = new ControlExecutor(daemon("trade-control-" + name), this::flushQueued);
     this.timer = Executors.newSingleThreadScheduledExecutor(daemon("trade-timer-" + name));
     this.workers = Executors.newCachedThreadPool(daemon("trade-worker-" + name));
     this.readWatch = new ReadWatch(live, workers, name);
@@ -89,6 +90,10 @@ public final class Network implements AutoCloseable {
     this.replication = new Replication(self, registry, tableCodec, links, calls,
         settings.failureTimeout().plus(settings.heartbeatInterval()).toNanos(),
         (task, delay) -> {
+          if (delay <= 0) {
+            onControl(task);
+            return;
+          }
           try {
             timer.schedule(() -> onControl(task), delay, TimeUnit.NANOSECONDS);
           } catch (RejectedExecutionException closing) {
@@ -317,6 +322,10 @@ public final class Network implements AutoCloseable {
       }
       return false;
     }
+  }
+
+  private void flushQueued() {
+    replication.flushQueued();
   }
 
   private UUID initiator(Link l) {

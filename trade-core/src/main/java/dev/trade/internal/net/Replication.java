@@ -8,8 +8,8 @@ import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
 import java.io.IOException;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.HashSet;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -32,20 +32,12 @@ final class Replication {
   private static final long STATE_GRACE_NANOS = 60_000_000_000L;
   /** The least time between two floods of this container's own link state, but see linkDown. */
   static final long OWN_FLOOD_GAP_NANOS = 50_000_000L;
-  /** The least time between two route computations for other containers' link states. */
-  private static final long ROUTES_GAP_NANOS = 20_000_000L;
-  private static final long PRUNE_GAP_NANOS = 1_000_000_000L;
 
   private final String selfId;
   private final Registry registry;
   private final Codec tableCodec;
   private final Map<UUID, Link> links;
-  private final RemoteCalls calls;
   private final Topology topology;
-  private volatile Map<UUID, UUID> nextHops = Map.of();
-  /** The routes {@link #nextHops} and the registry follow (the last computed). Control thread. */
-  private Map<String, Topology.Route> routed = Map.of();
-  private final Map<String, UUID> ids = new HashMap<>();
 
   /** Runs a task on the control thread after a delay in nanoseconds. */
   interface Scheduler {
@@ -53,16 +45,10 @@ final class Replication {
   }
 
   private final Scheduler scheduler;
-  private final Consumer<UUID> unreachable;
-  private long refreshAt;
   /** When this container's own link state last went out (nanoTime), and which version. */
   private long ownFloodAt;
   private long ownFlooded;
   private boolean ownFloodPending;
-  private boolean topologyPending;
-  /** When routes were last computed, and when unreachable containers were last pruned (nanoTime). */
-  private long routesAt;
-  private long prunedAt;
   private Set<String> ownFloodedNeighbours = Set.of();
   /**
    * New links whose peer's DIGEST has not been answered yet. They get no floods until then: the
@@ -71,7 +57,10 @@ final class Replication {
    */
   private final Set<Link> unanswered = new HashSet<>();
   private final FloodFilter filter;
+  /** Links with frames queued by {@link #send} and not written yet. */
+  private final Set<Link> queued = new LinkedHashSet<>();
   private final Tables tables;
+  private final Routing routing;
 
   /**
    * @param holdDownNanos how long a container that became unreachable stays so unless it proves
@@ -82,15 +71,20 @@ final class Replication {
   Replication(UUID self, Registry registry, Codec tableCodec, Map<UUID, Link> links, RemoteCalls calls,
       long holdDownNanos, Scheduler scheduler, Consumer<UUID> unreachable) {
     this.scheduler = scheduler;
-    this.unreachable = unreachable;
     this.selfId = self.toString();
     this.registry = registry;
     this.tableCodec = tableCodec;
     this.links = links;
-    this.calls = calls;
     this.topology = new Topology(selfId, holdDownNanos);
     this.filter = new FloodFilter(topology, registry);
     this.tables = new Tables(registry, STATE_GRACE_NANOS);
+    this.routing = new Routing(topology, tables, registry, filter, calls, unreachable, scheduler,
+        (hop, owner) -> {
+          Link via = links.get(hop);
+          if (via != null) {
+            send(via, StateFrames.tableRequest(owner));
+          }
+        }, STATE_GRACE_NANOS);
   }
 
   /** See {@link FloodFilter#isStale}. Any thread. */
@@ -100,7 +94,7 @@ final class Replication {
 
   /** The neighbour on the shortest path to {@code container}, or null. Any thread. */
   UUID nextHop(UUID container) {
-    return nextHops.get(container);
+    return routing.nextHop(container);
   }
 
   void linkUp(Link link) {
@@ -161,7 +155,7 @@ final class Replication {
    * or receivers would list services that they cannot call yet.
    */
   private void ownStateBefore(Link from) {
-    if (ownFloodPending && !ownFloodedNeighbours.contains(from.peerId.toString())
+    if (ownFloodPending && !ownFloodedNeighbours.contains(from.peerKey)
         && topology.own().version() > ownFlooded) {
       floodOwn(topology.own(), null);
     }
@@ -178,7 +172,7 @@ final class Replication {
     Set<String> ids = new HashSet<>();
     links.keySet().forEach(id -> ids.add(id.toString()));
     Topology.LinkState own = topology.setOwnNeighbours(ids);
-    afterTopologyChange();
+    routing.follow();
     return own;
   }
 
@@ -228,13 +222,13 @@ final class Replication {
             // n - 2 copies per receiver, n^2 frames per link change.
             byte[] frame = StateFrames.wrap(Wire.LINKS, payload);
             for (Link l : links.values()) {
-              String peer = l.peerId.toString();
+              String peer = l.peerKey;
               if (l != from && !peer.equals(owner) && !neighbours.contains(peer)
                   && !unanswered.contains(l)) {
                 send(l, frame);
               }
             }
-            topologyChangedSoon();
+            routing.changedSoon(owner.equals(from.peerKey));
           }
           break;
         }
@@ -246,7 +240,7 @@ final class Replication {
           }
           List<ServiceDescriptor> services = StateFrames.descriptors(tableCodec.read(in, loader()));
           // Routes as computed last: a table whose owner is not routable yet is listed once it is.
-          if (!tables.table(new Registry.Table(owner, version, services), routed.get(owner),
+          if (!tables.table(new Registry.Table(owner, version, services), routing.route(owner),
               System.nanoTime())) {
             break;
           }
@@ -262,7 +256,7 @@ final class Replication {
           }
           List<ServiceDescriptor> add = StateFrames.descriptors(tableCodec.read(in, loader()));
           List<Long> remove = StateFrames.ids(tableCodec.read(in, loader()));
-          Registry.DeltaResult r = tables.delta(owner, version, add, remove, routed.get(owner));
+          Registry.DeltaResult r = tables.delta(owner, version, add, remove, routing.route(owner));
           if (r == Registry.DeltaResult.APPLIED) {
             ownStateBefore(from);
             flood(StateFrames.wrap(Wire.DELTA, payload), from);
@@ -302,87 +296,6 @@ final class Replication {
     }
   }
 
-  /**
-   * Routes, distances and departures follow received link states once the frames queued on the
-   * control thread now have been handled, not after each, and at most once per
-   * {@link #ROUTES_GAP_NANOS}: at start-up every container's states arrive in bursts, and each
-   * computation walks the whole graph. Changes of this container's own links apply at once.
-   */
-  private void topologyChangedSoon() {
-    if (!topologyPending) {
-      topologyPending = true;
-      long wait = routesAt + ROUTES_GAP_NANOS - System.nanoTime();
-      scheduler.schedule(() -> {
-        if (topologyPending) {
-          afterTopologyChange();
-        }
-      }, Math.max(0, wait));
-    }
-  }
-
-  private void afterTopologyChange() {
-    topologyPending = false;
-    long now = System.nanoTime();
-    routesAt = now;
-    Map<String, Topology.Route> routes = topology.routes();
-    if (now - prunedAt >= PRUNE_GAP_NANOS) {
-      prunedAt = now;
-      topology.pruneUnreachable(now, STATE_GRACE_NANOS);
-      filter.pruned();
-      tables.prune(now);
-      ids.keySet().retainAll(routes.keySet());
-    }
-    if (routes == routed) {
-      return; // the same routes as computed last time: nothing follows
-    }
-    Map<String, Topology.Route> was = routed;
-    routed = routes;
-    Map<UUID, UUID> hops = new HashMap<>();
-    Map<String, Integer> moved = new HashMap<>();
-    for (Map.Entry<String, Topology.Route> r : routes.entrySet()) {
-      hops.put(id(r.getKey()), id(r.getValue().nextHop()));
-      Topology.Route before = was.get(r.getKey());
-      if (before != null && before.distance() != r.getValue().distance()) {
-        moved.put(r.getKey(), r.getValue().distance());
-      }
-    }
-    Map<UUID, UUID> before = nextHops;
-    nextHops = Map.copyOf(hops);
-    tables.follow(routes, moved, now);
-    List<String> known = registry.remoteContainers();
-    for (UUID gone : before.keySet()) {
-      if (!hops.containsKey(gone)) {
-        calls.failTo(gone, "container " + gone + " left or is not reachable any more");
-        unreachable.accept(gone);
-      }
-    }
-    long end = topology.nextHoldDownEnd();
-    if (end != 0 && (refreshAt == 0 || end - refreshAt < 0)) {
-      refreshAt = end;
-      scheduler.schedule(() -> {
-        refreshAt = 0;
-        topology.refresh();
-        afterTopologyChange();
-      }, Math.max(0, end - System.nanoTime()));
-    }
-    // A container that became reachable but whose table we lack (it travelled another way, or was
-    // pruned while the path was down): ask the next hop for it.
-    for (Map.Entry<UUID, UUID> h : hops.entrySet()) {
-      if (!before.containsKey(h.getKey()) && !known.contains(h.getKey().toString())) {
-        Link via = links.get(h.getValue());
-        if (via != null) {
-          send(via, StateFrames.tableRequest(h.getKey().toString()));
-        }
-      }
-    }
-  }
-
-  /** The id as a UUID, parsed once per container. */
-  private UUID id(String container) {
-    return ids.computeIfAbsent(container, UUID::fromString);
-  }
-
-
   private static ClassLoader loader() {
     return Replication.class.getClassLoader();
   }
@@ -395,11 +308,29 @@ final class Replication {
     }
   }
 
-  private static void send(Link link, byte[] frame) {
+  /**
+   * Queues a frame; {@link #flushQueued()} writes it. Floods reach every link, and a burst of
+   * frames handled on the control thread then leaves with one system call per link, not one per
+   * frame, and wakes each neighbour's reader once.
+   */
+  private void send(Link link, byte[] frame) {
     try {
-      link.send(frame);
+      link.queue(frame);
+      queued.add(link);
     } catch (IOException e) {
       // The link closed itself; its reader reports the loss.
     }
+  }
+
+  /** Writes the frames queued by the tasks handled so far. Control thread. */
+  void flushQueued() {
+    for (Link l : queued) {
+      try {
+        l.flushQueued();
+      } catch (IOException e) {
+        // The link closed itself; its reader reports the loss.
+      }
+    }
+    queued.clear();
   }
 }

@@ -1,6 +1,8 @@
 package dev.trade.internal.net;
 
 import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Collections;
 import java.util.HashMap;
 import java.util.List;
@@ -35,6 +37,8 @@ final class Topology {
 
   private final String self;
   private final Map<String, LinkState> states = new HashMap<>();
+  /** Each state's neighbours, sorted once when it arrives: routes walk them in this order. */
+  private final Map<String, String[]> sorted = new HashMap<>();
   /** The version of each state in {@link #states}, for {@link #isStale} on other threads. */
   private final Map<String, Long> versions = new ConcurrentHashMap<>();
   private final Map<String, Long> unreachableSince = new HashMap<>();
@@ -54,15 +58,13 @@ final class Topology {
   Topology(String self, long holdDownNanos) {
     this.self = self;
     this.holdDownNanos = holdDownNanos;
-    states.put(self, new LinkState(self, 0, Set.of()));
-    versions.put(self, 0L);
+    put(new LinkState(self, 0, Set.of()));
   }
 
   /** Sets this container's own neighbours; returns the new own state to flood. */
   LinkState setOwnNeighbours(Set<String> neighbours) {
     LinkState s = new LinkState(self, ++ownVersion, neighbours);
-    states.put(self, s);
-    versions.put(self, s.version());
+    put(s);
     recompute();
     return s;
   }
@@ -89,10 +91,17 @@ final class Topology {
     if (known != null && known.version() >= s.version()) {
       return false;
     }
-    states.put(s.owner(), s);
-    versions.put(s.owner(), s.version());
+    put(s);
     stale = true;
     return true;
+  }
+
+  private void put(LinkState s) {
+    states.put(s.owner(), s);
+    versions.put(s.owner(), s.version());
+    String[] n = s.neighbours().toArray(new String[0]);
+    Arrays.sort(n);
+    sorted.put(s.owner(), n);
   }
 
   /** Every known state (to send to a new neighbour). */
@@ -139,6 +148,7 @@ final class Topology {
       if (nowNanos - e.getValue() > graceNanos) {
         states.remove(e.getKey());
         versions.remove(e.getKey());
+        sorted.remove(e.getKey());
         return true;
       }
       return !states.containsKey(e.getKey());
@@ -208,18 +218,17 @@ final class Topology {
 
   /** Neighbours of {@code node} that list {@code node} back, sorted for determinism. */
   private List<String> neighboursOf(String node) {
-    LinkState s = states.get(node);
-    if (s == null) {
+    String[] listed = sorted.get(node);
+    if (listed == null) {
       return List.of();
     }
-    List<String> result = new java.util.ArrayList<>();
-    for (String n : s.neighbours()) {
+    List<String> result = new ArrayList<>(listed.length);
+    for (String n : listed) {
       LinkState back = states.get(n);
       if (back != null && back.neighbours().contains(node)) {
         result.add(n);
       }
     }
-    Collections.sort(result);
     return result;
   }
 }

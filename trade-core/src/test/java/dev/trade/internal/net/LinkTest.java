@@ -1,6 +1,8 @@
 package dev.trade.internal.net;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trade.internal.codec.ByteSink;
@@ -11,6 +13,7 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
+import java.net.SocketTimeoutException;
 import java.time.Duration;
 import java.util.Arrays;
 import java.util.List;
@@ -107,6 +110,23 @@ class LinkTest {
     link.start(r, watch);
     far.close();
     assertEquals("connection closed by C", r.reason.get(5, TimeUnit.SECONDS));
+  }
+
+  @Test
+  void queuedFramesLeaveTogetherWhenFlushed() throws Exception {
+    Link link = new Link(near, peer("C"), true, 1 << 20);
+    byte[] ping = Frames.finish(Frames.start(Wire.PING, 0));
+    link.queue(ping);
+    link.queue(ping);
+    far.setSoTimeout(200);
+    assertThrows(SocketTimeoutException.class, () -> far.getInputStream().read(),
+        "a queued frame was written before the flush");
+    link.flushQueued();
+    byte[] both = far.getInputStream().readNBytes(2 * ping.length);
+    assertArrayEquals(ping, Arrays.copyOfRange(both, 0, ping.length));
+    assertArrayEquals(ping, Arrays.copyOfRange(both, ping.length, both.length));
+    link.close("done");
+    assertThrows(IOException.class, () -> link.queue(ping), "queued on a closed link");
   }
 
   @Test

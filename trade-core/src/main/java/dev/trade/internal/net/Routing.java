@@ -1,0 +1,153 @@
+package dev.trade.internal.net;
+
+import dev.trade.internal.registry.Registry;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.UUID;
+import java.util.function.BiConsumer;
+import java.util.function.Consumer;
+
+/**
+ * Follows the topology: computes routes when link states change, publishes the next hop towards
+ * each container, and lets the tables, pending calls and discovery follow when containers become
+ * reachable or unreachable.
+ *
+ * <p>Routes for received link states are computed once the frames queued on the control thread
+ * now have been handled, not after each, and at most once per {@link #GAP_NANOS}: at start-up
+ * every container's states arrive in bursts, and each computation walks the whole graph. Changes
+ * of this container's own links, and a neighbour's state (which makes a new link usable: the first
+ * call to a container that just started waits for it), are followed at once.
+ *
+ * <p>{@link #nextHop} is safe for concurrent use; everything else runs on the control thread.
+ */
+final class Routing {
+  /** The least time between two route computations for other containers' link states. */
+  private static final long GAP_NANOS = 20_000_000L;
+  private static final long PRUNE_GAP_NANOS = 1_000_000_000L;
+
+  private final Topology topology;
+  private final Tables tables;
+  private final Registry registry;
+  private final FloodFilter filter;
+  private final RemoteCalls calls;
+  private final Consumer<UUID> unreachable;
+  private final Replication.Scheduler scheduler;
+  private final BiConsumer<UUID, String> askForTable;
+  private final long graceNanos;
+  private volatile Map<UUID, UUID> nextHops = Map.of();
+  /** The routes {@link #nextHops} and the registry follow (the last computed). */
+  private Map<String, Topology.Route> routed = Map.of();
+  private final Map<String, UUID> ids = new HashMap<>();
+  private boolean pending;
+  private boolean soon; // the pending computation is queued without delay
+  /** When routes were last computed, unreachable states last pruned, and a hold-down ends. */
+  private long computedAt;
+  private long prunedAt;
+  private long refreshAt;
+
+  /**
+   * @param unreachable told of each container that was reachable and is not any more
+   * @param askForTable asks the neighbour (first argument) for the table of a container (second)
+   * @param graceNanos how long states and tables of unreachable containers are kept
+   */
+  Routing(Topology topology, Tables tables, Registry registry, FloodFilter filter,
+      RemoteCalls calls, Consumer<UUID> unreachable, Replication.Scheduler scheduler,
+      BiConsumer<UUID, String> askForTable, long graceNanos) {
+    this.topology = topology;
+    this.tables = tables;
+    this.registry = registry;
+    this.filter = filter;
+    this.calls = calls;
+    this.unreachable = unreachable;
+    this.scheduler = scheduler;
+    this.askForTable = askForTable;
+    this.graceNanos = graceNanos;
+  }
+
+  /** The neighbour on the shortest path to {@code container}, or null. Any thread. */
+  UUID nextHop(UUID container) {
+    return nextHops.get(container);
+  }
+
+  /** The route to {@code container} as computed last, or null. */
+  Topology.Route route(String container) {
+    return routed.get(container);
+  }
+
+  /** A received link state changed the topology; {@code neighbour}: it is a neighbour's own. */
+  void changedSoon(boolean neighbour) {
+    long wait = neighbour ? 0 : Math.max(0, computedAt + GAP_NANOS - System.nanoTime());
+    if (pending && (!neighbour || soon)) {
+      return; // a computation is queued, soon enough
+    }
+    pending = true;
+    soon |= wait == 0;
+    scheduler.schedule(() -> {
+      if (pending) {
+        follow();
+      }
+    }, wait);
+  }
+
+  /** Computes routes now, and lets everything follow them. */
+  void follow() {
+    pending = false;
+    soon = false;
+    long now = System.nanoTime();
+    computedAt = now;
+    Map<String, Topology.Route> routes = topology.routes();
+    if (now - prunedAt >= PRUNE_GAP_NANOS) {
+      prunedAt = now;
+      topology.pruneUnreachable(now, graceNanos);
+      filter.pruned();
+      tables.prune(now);
+      ids.keySet().retainAll(routes.keySet());
+    }
+    if (routes == routed) {
+      return; // the same routes as computed last time: nothing follows
+    }
+    Map<String, Topology.Route> was = routed;
+    routed = routes;
+    Map<UUID, UUID> hops = new HashMap<>();
+    Map<String, Integer> moved = new HashMap<>();
+    for (Map.Entry<String, Topology.Route> r : routes.entrySet()) {
+      hops.put(id(r.getKey()), id(r.getValue().nextHop()));
+      Topology.Route before = was.get(r.getKey());
+      if (before != null && before.distance() != r.getValue().distance()) {
+        moved.put(r.getKey(), r.getValue().distance());
+      }
+    }
+    Map<UUID, UUID> before = nextHops;
+    nextHops = Map.copyOf(hops);
+    tables.follow(routes, moved, now);
+    List<String> known = registry.remoteContainers();
+    for (UUID gone : before.keySet()) {
+      if (!hops.containsKey(gone)) {
+        calls.failTo(gone, "container " + gone + " left or is not reachable any more");
+        unreachable.accept(gone);
+      }
+    }
+    long end = topology.nextHoldDownEnd();
+    if (end != 0 && (refreshAt == 0 || end - refreshAt < 0)) {
+      refreshAt = end;
+      scheduler.schedule(() -> {
+        refreshAt = 0;
+        topology.refresh();
+        follow();
+      }, Math.max(0, end - System.nanoTime()));
+    }
+    // A container that became reachable but whose table we lack (it travelled another way, or was
+    // pruned while the path was down): ask the next hop for it.
+    for (Map.Entry<UUID, UUID> h : hops.entrySet()) {
+      if (!before.containsKey(h.getKey()) && !known.contains(h.getKey().toString())) {
+        askForTable.accept(h.getValue(), h.getKey().toString());
+      }
+    }
+  }
+
+  /** The id as a UUID, parsed once per container. */
+  private UUID id(String container) {
+    return ids.computeIfAbsent(container, UUID::fromString);
+  }
+}
