@@ -19,48 +19,64 @@ final class FloodFilter {
 
   private final Topology topology;
   private final Registry registry;
+  private final Tables tables;
   /** The newest link-state version of each owner that a reader has queued. */
   private final Map<String, Long> queuedLinks = new ConcurrentHashMap<>();
+  /** The newest TABLE version of each owner that a reader has queued. */
+  private final Map<String, Long> queuedTables = new ConcurrentHashMap<>();
 
-  FloodFilter(Topology topology, Registry registry) {
+  FloodFilter(Topology topology, Registry registry, Tables tables) {
     this.topology = topology;
     this.registry = registry;
+    this.tables = tables;
   }
 
   /**
-   * Whether a LINKS, TABLE or DELTA payload is a copy of a version applied here already, or (for
-   * LINKS) queued already from another link. Tables are not filtered by what is queued: one that
-   * the control thread drops (its owner just went away) may be asked for again at the same version.
+   * Whether a LINKS, TABLE or DELTA payload is a copy of a version applied here already, or queued
+   * already from another link (a DELTA: a TABLE at that version or later is queued). A TABLE that
+   * passes is kept on the control thread, listed or waiting for a route ({@link Tables}), so a
+   * copy of it is never needed again; a DELTA that passes is not counted, since one that does not
+   * follow makes the control thread ask for the whole TABLE at that version.
    */
   boolean isStale(int type, byte[] payload) {
     try {
       ByteSource in = ByteSource.of(payload);
       String owner = in.readText(MAX_TEXT);
       long version = in.readLong();
-      if (type != Wire.LINKS) {
-        return registry.isStale(owner, version);
+      if (type == Wire.LINKS) {
+        // While the control thread runs behind, every copy of a new version passes the check.
+        return topology.isStale(owner, version) || queued(queuedLinks, owner, version);
       }
-      if (topology.isStale(owner, version)) {
+      Long table = queuedTables.get(owner);
+      if (table != null && table >= version) {
+        return true; // checked first: the registry's check takes its lock
+      }
+      if (registry.isStale(owner, version)) {
         return true;
       }
-      // While the control thread runs behind, every copy of a new version passes the check above.
-      long[] was = {Long.MIN_VALUE};
-      queuedLinks.merge(owner, version, (old, v) -> {
-        was[0] = old;
-        return Math.max(old, v);
-      });
-      return was[0] >= version;
+      return type == Wire.TABLE && queued(queuedTables, owner, version);
     } catch (TRADESerializationException | RuntimeException e) {
       return false; // malformed: the control thread closes the link
     }
   }
 
+  /** Records {@code version} as queued for {@code owner}; whether one as new was queued before. */
+  private static boolean queued(Map<String, Long> queued, String owner, long version) {
+    long[] was = {Long.MIN_VALUE};
+    queued.merge(owner, version, (old, v) -> {
+      was[0] = old;
+      return Math.max(old, v);
+    });
+    return was[0] >= version;
+  }
+
   /**
-   * Forgets what was queued for owners whose states the topology pruned: they may be learnt again,
-   * at any version. (A state still queued then is only queued once more from another link: applied
-   * once, dropped as stale after.)
+   * Forgets what was queued for owners whose states or tables were pruned: they may be learnt
+   * again, at any version. (One still queued then is only queued once more from another link:
+   * applied once, dropped as stale after.)
    */
   void pruned() {
     queuedLinks.keySet().removeIf(owner -> !topology.isStale(owner, Long.MIN_VALUE));
+    queuedTables.keySet().removeIf(owner -> !tables.isStale(owner, Long.MIN_VALUE));
   }
 }

@@ -76,8 +76,8 @@ final class Replication {
     this.tableCodec = tableCodec;
     this.links = links;
     this.topology = new Topology(selfId, holdDownNanos);
-    this.filter = new FloodFilter(topology, registry);
     this.tables = new Tables(registry, STATE_GRACE_NANOS);
+    this.filter = new FloodFilter(topology, registry, tables);
     this.routing = new Routing(topology, tables, registry, filter, calls, unreachable, scheduler,
         (hop, owner) -> {
           Link via = links.get(hop);

@@ -100,8 +100,8 @@ final class Routing {
     if (now - prunedAt >= PRUNE_GAP_NANOS) {
       prunedAt = now;
       topology.pruneUnreachable(now, graceNanos);
-      filter.pruned();
       tables.prune(now);
+      filter.pruned();
       ids.keySet().retainAll(routes.keySet());
     }
     if (routes == routed) {

@@ -18,7 +18,9 @@ import org.junit.jupiter.api.Test;
 class FloodFilterTest {
   private final Topology topology = new Topology("me", TimeUnit.SECONDS.toNanos(60));
   private final Registry registry = new Registry("me", "me", "host");
-  private final FloodFilter filter = new FloodFilter(topology, registry);
+  private final Tables tables = new Tables(registry, TimeUnit.SECONDS.toNanos(60));
+  private final FloodFilter filter = new FloodFilter(topology, registry, tables);
+  private final Codec codec = new Codec(AllowList.withDefaults(), Limits.DEFAULT, InfoBinding.NONE);
 
   private static byte[] payload(byte[] frame) {
     return Arrays.copyOfRange(frame, Wire.HEADER, frame.length);
@@ -48,14 +50,39 @@ class FloodFilterTest {
     assertFalse(filter.isStale(Wire.LINKS, links("b", 1)));
   }
 
+  private byte[] table(String owner, long version) {
+    return payload(StateFrames.table(codec, new Registry.Table(owner, version, List.of())));
+  }
+
+  private byte[] delta(String owner, long version) {
+    return payload(StateFrames.delta(codec, owner, version, List.of(), List.of()));
+  }
+
   @Test
-  void tablesAreDroppedOnlyWhenAppliedAlready() {
-    Codec codec = new Codec(AllowList.withDefaults(), Limits.DEFAULT, InfoBinding.NONE);
-    byte[] table = payload(StateFrames.table(codec, new Registry.Table("x", 1, List.of())));
-    assertFalse(filter.isStale(Wire.TABLE, table));
-    assertFalse(filter.isStale(Wire.TABLE, table), "a table dropped while held down may be asked for again");
-    registry.applyTable(new Registry.Table("x", 1, List.of()), 1);
-    assertTrue(filter.isStale(Wire.TABLE, table));
+  void aTableIsQueuedOnceWhateverTheLinksItComesOver() {
+    assertFalse(filter.isStale(Wire.TABLE, table("x", 1)));
+    assertTrue(filter.isStale(Wire.TABLE, table("x", 1)), "queued already, not applied yet");
+    assertTrue(filter.isStale(Wire.DELTA, delta("x", 1)), "a table at its version is queued");
+    assertFalse(filter.isStale(Wire.TABLE, table("x", 2)), "newer");
+    registry.applyTable(new Registry.Table("y", 3, List.of()), 1);
+    assertTrue(filter.isStale(Wire.TABLE, table("y", 3)), "applied already");
     assertFalse(filter.isStale(Wire.LINKS, new byte[] {1}), "malformed: left to the control thread");
+  }
+
+  @Test
+  void aDeltaThatPassesLetsTheTableAtItsVersionPass() {
+    assertFalse(filter.isStale(Wire.DELTA, delta("x", 5)));
+    // Not following what is known here, the control thread asks for the table at that version.
+    assertFalse(filter.isStale(Wire.TABLE, table("x", 5)), "the table asked for was dropped");
+  }
+
+  @Test
+  void aTableForgottenHereMayComeAgain() {
+    assertFalse(filter.isStale(Wire.TABLE, table("x", 1)));
+    filter.pruned(); // neither listed nor waiting: forgotten
+    assertFalse(filter.isStale(Wire.TABLE, table("x", 1)));
+    tables.table(new Registry.Table("x", 1, List.of()), null, 0); // waits for a route
+    filter.pruned();
+    assertTrue(filter.isStale(Wire.TABLE, table("x", 1)), "waiting for a route: kept");
   }
 }
