@@ -14,7 +14,6 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.Set;
-import java.util.concurrent.ThreadLocalRandom;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -57,15 +56,7 @@ class ManyContainersTest {
 
   @Test
   void manyContainersLinkToFewConvergeForwardAndSeeOneLeave() throws TRADEException {
-    String port = Integer.toString(20_000 + ThreadLocalRandom.current().nextInt(20_000));
-    String system = "many-" + Long.toHexString(ThreadLocalRandom.current().nextLong());
-    for (int i = 0; i < N; i++) {
-      TRADEContainer c = TRADEContainer.builder().name("c" + i)
-          .property("STARTDISCOVERY", "true").property("STARTBROADCAST", "true")
-          .property("BROADCASTPORT", port).property("TRADESYSID", system).build();
-      containers.add(c);
-      c.registerAllServices(new Named(c.getName()));
-    }
+    Swarm.start(N, containers);
     for (TRADEContainer c : containers) {
       Await.until(WAIT, () -> c.getAvailableServices(WHO).size() == N, "all services on " + c.getName());
     }

@@ -113,13 +113,17 @@ final class Connector {
 
   /** Connects once to an address heard from discovery (no retries: it announces again). */
   void connectOnce(InetSocketAddress address) {
-    workers.execute(() -> {
-      try {
-        connect(address);
-      } catch (IOException | Handshake.Failure e) {
-        LOG.log(Level.DEBUG, "cannot connect to announced {0}: {1}", address, e.getMessage());
-      }
-    });
+    try {
+      workers.execute(() -> {
+        try {
+          connect(address);
+        } catch (IOException | Handshake.Failure e) {
+          LOG.log(Level.DEBUG, "cannot connect to announced {0}: {1}", address, e.getMessage());
+        }
+      });
+    } catch (RejectedExecutionException e) {
+      // Closing: nothing to connect for.
+    }
   }
 
   /** Retries every kept address now (a link was lost). */
@@ -136,7 +140,11 @@ final class Connector {
   private void restart(InetSocketAddress address) {
     long chain = chains.get(address).incrementAndGet();
     backoff.put(address, MIN_BACKOFF_MS);
-    timer.execute(() -> attempt(address, chain));
+    try {
+      timer.execute(() -> attempt(address, chain));
+    } catch (RejectedExecutionException e) {
+      // Closing: nothing to connect for.
+    }
   }
 
   private void attempt(InetSocketAddress address, long chain) {
@@ -164,8 +172,10 @@ final class Connector {
   }
 
   private void schedule(InetSocketAddress address, long chain, long delayMs) {
-    if (!closed) {
+    try {
       timer.schedule(() -> attempt(address, chain), delayMs, TimeUnit.MILLISECONDS);
+    } catch (RejectedExecutionException e) {
+      // Closing: nothing to connect for.
     }
   }
 

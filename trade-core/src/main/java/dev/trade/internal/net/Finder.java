@@ -19,6 +19,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.UUID;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
@@ -167,7 +168,7 @@ final class Finder implements AutoCloseable {
     if (known.size() == 1) {
       choose();
     } else if (choosing.compareAndSet(false, true)) {
-      timer.schedule(this::choose, SETTLE_MS, TimeUnit.MILLISECONDS);
+      later(this::choose, SETTLE_MS);
     }
   }
 
@@ -204,11 +205,11 @@ final class Finder implements AutoCloseable {
     if (Network.compareIds(self, peer) < 0 || !Overlay.chooses(peer, self, known.keySet())) {
       dial(peer);
     } else {
-      timer.schedule(() -> {
+      later(() -> {
         if (!linked.test(peer) && wanted.contains(peer)) {
           dial(peer);
         }
-      }, SECOND_SIDE_DELAY_MS, TimeUnit.MILLISECONDS);
+      }, SECOND_SIDE_DELAY_MS);
     }
   }
 
@@ -257,6 +258,14 @@ final class Finder implements AutoCloseable {
       announcedAt = now;
     }
     return announced;
+  }
+
+  private void later(Runnable task, long delayMs) {
+    try {
+      timer.schedule(task, delayMs, TimeUnit.MILLISECONDS);
+    } catch (RejectedExecutionException e) {
+      // The container is closing.
+    }
   }
 
   /** Wildcard listen addresses expanded to the addresses of every up interface. */

@@ -163,6 +163,9 @@ public final class Network implements AutoCloseable {
 
   /** A container left or died (routing lost it): discovery stops counting it at once. */
   private void unreachable(UUID container) {
+    if (closed) {
+      return;
+    }
     Finder f;
     synchronized (this) {
       f = finder;
@@ -351,8 +354,8 @@ public final class Network implements AutoCloseable {
             link.peerName, reason);
         calls.failVia(link.peerId, "the connection to " + link.peerName + " was lost ("
             + reason + ")");
-        replication.linkDown(link);
-        if (!closed) {
+        if (!closed) { // closing: no routes to follow, no one to dial again
+          replication.linkDown(link);
           connector.retryNow();
         }
       }
