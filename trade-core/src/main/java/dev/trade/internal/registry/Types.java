@@ -18,18 +18,6 @@ public final class Types {
 
   private Types() {}
 
-  private static final Map<Class<?>, Class<?>> WRAPPERS =
-      Map.of(
-          boolean.class, Boolean.class,
-          byte.class, Byte.class,
-          short.class, Short.class,
-          char.class, Character.class,
-          int.class, Integer.class,
-          long.class, Long.class,
-          float.class, Float.class,
-          double.class, Double.class,
-          void.class, Void.class);
-
   private static final Map<Class<?>, Object> DEFAULTS =
       Map.of(
           boolean.class, false,
@@ -43,7 +31,27 @@ public final class Types {
 
   /** The boxed class for a primitive (void → Void), the class itself otherwise. */
   public static Class<?> box(Class<?> c) {
-    return c.isPrimitive() ? WRAPPERS.get(c) : c;
+    // Comparisons, not a map lookup: every call boxes its primitive parameter and return types.
+    if (!c.isPrimitive()) {
+      return c;
+    } else if (c == int.class) {
+      return Integer.class;
+    } else if (c == boolean.class) {
+      return Boolean.class;
+    } else if (c == double.class) {
+      return Double.class;
+    } else if (c == long.class) {
+      return Long.class;
+    } else if (c == void.class) {
+      return Void.class;
+    } else if (c == float.class) {
+      return Float.class;
+    } else if (c == byte.class) {
+      return Byte.class;
+    } else if (c == short.class) {
+      return Short.class;
+    }
+    return Character.class;
   }
 
   /** The primitive type (or {@code void}) with this name, or null. */
