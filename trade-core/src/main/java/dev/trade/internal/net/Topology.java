@@ -1,13 +1,10 @@
 package dev.trade.internal.net;
 
-import java.util.ArrayDeque;
-import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collections;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Queue;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 
@@ -37,8 +34,15 @@ final class Topology {
 
   private final String self;
   private final Map<String, LinkState> states = new HashMap<>();
-  /** Each state's neighbours, sorted once when it arrives: routes walk them in this order. */
-  private final Map<String, String[]> sorted = new HashMap<>();
+  /** The states as numbered nodes, for route computations. */
+  private final Graph graph = new Graph();
+  // The last computation, by node number, to tell quickly whether routes changed.
+  private int[] distance = new int[0];
+  private int[] firstHop = new int[0];
+  private int[] lastDistance = new int[0];
+  private int[] lastFirstHop = new int[0];
+  private int lastSize = -1;
+  private int lastGeneration;
   /** The version of each state in {@link #states}, for {@link #isStale} on other threads. */
   private final Map<String, Long> versions = new ConcurrentHashMap<>();
   private final Map<String, Long> unreachableSince = new HashMap<>();
@@ -99,9 +103,7 @@ final class Topology {
   private void put(LinkState s) {
     states.put(s.owner(), s);
     versions.put(s.owner(), s.version());
-    String[] n = s.neighbours().toArray(new String[0]);
-    Arrays.sort(n);
-    sorted.put(s.owner(), n);
+    graph.put(s.owner(), s.neighbours());
   }
 
   /** Every known state (to send to a new neighbour). */
@@ -148,7 +150,7 @@ final class Topology {
       if (nowNanos - e.getValue() > graceNanos) {
         states.remove(e.getKey());
         versions.remove(e.getKey());
-        sorted.remove(e.getKey());
+        graph.remove(e.getKey());
         return true;
       }
       return !states.containsKey(e.getKey());
@@ -158,12 +160,7 @@ final class Topology {
   /** Whether {@code container} is held unreachable now (see the constructor). */
   boolean isHeldDown(String container) {
     fresh();
-    long[] h = holdDown.get(container);
-    if (h == null) {
-      return false;
-    }
-    LinkState s = states.get(container);
-    return System.nanoTime() - h[1] < 0 && (s == null || s.version() <= h[0]);
+    return heldDown(container, System.nanoTime());
   }
 
   /** Recomputes routes now (a hold-down may have ended). */
@@ -175,26 +172,40 @@ final class Topology {
     stale = false;
     long now = System.nanoTime();
     holdDown.values().removeIf(h -> now - h[1] >= 0);
-    Map<String, Route> before = routes;
-    Map<String, Route> result = new HashMap<>();
-    Queue<String> queue = new ArrayDeque<>();
-    for (String n : neighboursOf(self)) {
-      result.put(n, new Route(n, 1));
-      queue.add(n);
+    int n = graph.size();
+    if (distance.length < n) {
+      distance = new int[2 * n];
+      firstHop = new int[2 * n];
     }
-    while (!queue.isEmpty()) {
-      String at = queue.poll();
-      Route via = result.get(at);
-      for (String n : neighboursOf(at)) {
-        if (!n.equals(self) && !result.containsKey(n) && !isHeldDown(n)) {
-          result.put(n, new Route(via.nextHop(), via.distance() + 1));
-          queue.add(n);
-        }
+    int from = graph.node(self);
+    graph.shortestPaths(from, distance, firstHop,
+        holdDown.isEmpty() ? node -> false : node -> heldDown(graph.name(node), now));
+    distance[from] = -1; // not a route
+    for (int i = 0; i < n; i++) {
+      if (distance[i] < 0) {
+        firstHop[i] = -1;
       }
     }
-    if (!result.equals(before)) {
-      routes = Collections.unmodifiableMap(result); // unchanged routes keep their instance
+    if (n == lastSize && graph.generation() == lastGeneration
+        && Arrays.equals(distance, 0, n, lastDistance, 0, n)
+        && Arrays.equals(firstHop, 0, n, lastFirstHop, 0, n)) {
+      return; // unchanged routes keep their instance
     }
+    lastSize = n;
+    lastGeneration = graph.generation();
+    lastDistance = Arrays.copyOf(distance, n);
+    lastFirstHop = Arrays.copyOf(firstHop, n);
+    Map<String, Route> before = routes;
+    Map<String, Route> result = new HashMap<>();
+    for (int i = 0; i < n; i++) {
+      if (distance[i] > 0) {
+        result.put(graph.name(i), new Route(graph.name(firstHop[i]), distance[i]));
+      }
+    }
+    if (result.equals(before)) {
+      return; // the same routes, numbered differently
+    }
+    routes = Collections.unmodifiableMap(result);
     holdDown.keySet().removeAll(result.keySet()); // a direct link proves it alive
     for (String gone : before.keySet()) {
       if (!result.containsKey(gone)) {
@@ -202,6 +213,15 @@ final class Topology {
         holdDown.put(gone, new long[] {s == null ? Long.MAX_VALUE : s.version(), now + holdDownNanos});
       }
     }
+  }
+
+  private boolean heldDown(String container, long now) {
+    long[] h = holdDown.get(container);
+    if (h == null) {
+      return false;
+    }
+    LinkState s = states.get(container);
+    return now - h[1] < 0 && (s == null || s.version() <= h[0]);
   }
 
   /** When the earliest hold-down ends (nanoTime), or 0 when none is in force. */
@@ -214,21 +234,5 @@ final class Topology {
       }
     }
     return next;
-  }
-
-  /** Neighbours of {@code node} that list {@code node} back, sorted for determinism. */
-  private List<String> neighboursOf(String node) {
-    String[] listed = sorted.get(node);
-    if (listed == null) {
-      return List.of();
-    }
-    List<String> result = new ArrayList<>(listed.length);
-    for (String n : listed) {
-      LinkState back = states.get(n);
-      if (back != null && back.neighbours().contains(node)) {
-        result.add(n);
-      }
-    }
-    return result;
   }
 }
