@@ -232,15 +232,20 @@ final class Connector {
     // SO_TIMEOUT bounds each read, not the handshake: a peer that sends a byte now and then would
     // hold this thread for hours. Closing the socket at the deadline bounds all of it.
     AtomicBoolean settled = new AtomicBoolean(); // by the deadline or by the end of the handshake
-    ScheduledFuture<?> deadline = timer.schedule(() -> {
-      if (settled.compareAndSet(false, true)) {
-        try {
-          socket.close();
-        } catch (IOException ignored) {
-          // The reading thread fails either way.
+    ScheduledFuture<?> deadline;
+    try {
+      deadline = timer.schedule(() -> {
+        if (settled.compareAndSet(false, true)) {
+          try {
+            socket.close();
+          } catch (IOException ignored) {
+            // The reading thread fails either way.
+          }
         }
-      }
-    }, connectTimeoutMs, TimeUnit.MILLISECONDS);
+      }, connectTimeoutMs, TimeUnit.MILLISECONDS);
+    } catch (RejectedExecutionException e) {
+      throw new IOException("container closing");
+    }
     Handshake.Peer peer;
     try {
       peer = handshake.run(socket.getInputStream(), socket.getOutputStream());
