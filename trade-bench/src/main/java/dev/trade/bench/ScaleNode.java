@@ -18,6 +18,10 @@ import java.util.List;
  * Then it prints {@code HEAP <baseline> <after> <threads>}: heap in use after full GCs before the
  * containers were built and with them running. Exits when standard input closes (at most 10 min).
  *
+ * <p>With {@code -Dbench.progress=true} it also writes to standard error (the JVM's log) how long
+ * each container took to build and register, and once a second until convergence how many
+ * services its least and its best informed containers see.
+ *
  * <p>Arguments: system id, broadcast port, count, total, name prefix.
  */
 public final class ScaleNode {
@@ -62,16 +66,25 @@ public final class ScaleNode {
     // One after the other: started all at once, 25 containers per JVM on 2 cores left some of them
     // without any other container's service after a minute (see docs/benchmarks.md).
     List<TRADEContainer> containers = new ArrayList<>();
+    boolean progress = Boolean.getBoolean("bench.progress");
+    long go = System.nanoTime();
     for (int i = 0; i < count; i++) {
+      long t0 = System.nanoTime();
       TRADEContainer c = Lifecycle.discovering(TRADEContainer.builder().name(prefix + i), sysId, port)
           .build();
+      long t1 = System.nanoTime();
       c.registerAllServices(new Probe());
       containers.add(c);
+      if (progress) {
+        System.err.printf("BUILD %s: build %d ms, register %d ms%n", c.getName(), (t1 - t0) / 1_000_000,
+            (System.nanoTime() - t1) / 1_000_000);
+      }
     }
     System.out.println("BUILT " + Clock.epochMicros());
     TRADEServiceConstraints probe = new TRADEServiceConstraints().name("scaleProbe");
     long until = System.nanoTime() + 60_000_000_000L;
     boolean converged = false;
+    long report = System.nanoTime();
     while (System.nanoTime() < until) {
       converged = true;
       for (TRADEContainer c : containers) {
@@ -82,6 +95,18 @@ public final class ScaleNode {
       }
       if (converged) {
         break;
+      }
+      if (progress && System.nanoTime() - report >= 1_000_000_000L) {
+        report = System.nanoTime();
+        int least = Integer.MAX_VALUE;
+        int most = 0;
+        for (TRADEContainer c : containers) {
+          int seen = c.getAvailableServices(probe).size();
+          least = Math.min(least, seen);
+          most = Math.max(most, seen);
+        }
+        System.err.printf("PROGRESS %d ms after GO: %d..%d of %d services%n",
+            (report - go) / 1_000_000, least, most, total);
       }
       Thread.sleep(10);
     }
