@@ -15,6 +15,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.logging.Level;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -26,6 +27,7 @@ import org.junit.jupiter.api.Timeout;
  */
 @Timeout(30)
 class DigestTest {
+  private final LogCapture log = new LogCapture();
   private TRADEContainer provider;
   private InetSocketAddress address;
 
@@ -48,6 +50,7 @@ class DigestTest {
   @AfterEach
   void close() {
     provider.close();
+    log.close();
   }
 
   /** Frame types (first byte of each) read until the deadline, PINGs left out. */
@@ -99,6 +102,35 @@ class DigestTest {
       p.send(Digest.frame(List.of(), new Registry.Table(p.id.toString(), 0, List.of()), List.of()));
       List<Integer> types = framesFor(p, Duration.ofMillis(1_000));
       assertEquals(List.of((int) Wire.LINKS, (int) Wire.TABLE), types, "its link state, then its table");
+    }
+  }
+
+  /** The provider closes the link for {@code reason}, not later as silent (we send no pings). */
+  private void awaitClosedFor(RawPeer p, String reason) throws Exception {
+    p.awaitClosed(Duration.ofSeconds(5));
+    Deadline.await(Duration.ofSeconds(5), () -> log.has(Level.INFO, "closed: malformed", reason),
+        "the reason in:\n" + log.tail());
+  }
+
+  @Test
+  void aSecondDigestClosesTheLink() throws Exception {
+    try (RawPeer p = RawPeer.connect(address)) {
+      p.handshakeWithDigests("repeating");
+      digestOf(p);
+      byte[] digest = Digest.frame(List.of(), new Registry.Table(p.id.toString(), 0, List.of()),
+          List.of());
+      p.send(digest);
+      p.send(digest);
+      awaitClosedFor(p, "a second DIGEST");
+    }
+  }
+
+  @Test
+  void aDigestOnALinkWithoutDigestsClosesIt() throws Exception {
+    try (RawPeer p = RawPeer.connect(address)) {
+      assertFalse(p.handshake("older").digests());
+      p.send(Digest.frame(List.of(), new Registry.Table(p.id.toString(), 0, List.of()), List.of()));
+      awaitClosedFor(p, "one on a link without digests");
     }
   }
 
