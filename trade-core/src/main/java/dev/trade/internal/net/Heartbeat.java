@@ -45,6 +45,20 @@ final class Heartbeat {
     this.workers = workers;
   }
 
+  /**
+   * Pings a link that just came up, at once: its peer counts silence from the handshake on, while
+   * this side's first beat for it may be one and a half intervals away and its first other frames
+   * wait for the control thread. Without it, a new link had the least slack of all against a
+   * stall of this process. Called on the thread that made the link; never blocks on a new link.
+   */
+  static void greet(Link l) {
+    try {
+      l.send(PING);
+    } catch (IOException e) {
+      // send() closed the link; its reader reports it.
+    }
+  }
+
   void start() {
     lastBeat = System.nanoTime();
     resumed = lastBeat;

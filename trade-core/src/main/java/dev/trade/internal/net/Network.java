@@ -309,6 +309,7 @@ public final class Network implements AutoCloseable {
       link.close("container closing"); // close() may have gone over the live links already
     }
     link.start(dispatch, readWatch);
+    Heartbeat.greet(link);
   }
 
   /**

@@ -73,6 +73,22 @@ class SilentPeerTest {
   }
 
   @Test
+  void aNewLinkIsPingedAtOnceNotAtTheNextBeat() throws Exception {
+    // Beats a minute apart: a PING within a second can only be the one sent as the link came up.
+    InetSocketAddress address = start(TRADEContainer.builder().property("HEARTBEATINTERVAL", "60000")
+        .property("FAILURETIMEOUT", "180000"));
+    try (RawPeer p = RawPeer.connect(address)) {
+      p.handshake("new");
+      long deadline = System.nanoTime() + Duration.ofSeconds(1).toNanos();
+      boolean pinged = false;
+      while (!pinged && System.nanoTime() - deadline < 0) {
+        pinged = p.readFrame()[0] == Wire.PING; // the peer's LINKS and TABLE come too
+      }
+      assertTrue(pinged, "no PING on the new link within a second");
+    }
+  }
+
+  @Test
   void heartbeatsKeepAnIdleLinkAlive() throws TRADEException {
     start(TRADEContainer.builder().property("HEARTBEATINTERVAL", "100").property("FAILURETIMEOUT", "600"));
     try (TRADEContainer idle = TRADEContainer.builder().name("idle")
