@@ -22,7 +22,6 @@ import java.util.function.IntPredicate;
 final class Graph {
   private final Map<String, Integer> index = new HashMap<>();
   private final List<String> names = new ArrayList<>();
-  private String[][] listedNames = new String[16][];
   private int[][] listed = new int[16][];
   private BitSet[] listedSet = new BitSet[16];
   private int states;
@@ -38,7 +37,6 @@ final class Graph {
     index.put(id, n);
     names.add(id);
     if (n == listed.length) {
-      listedNames = Arrays.copyOf(listedNames, 2 * n);
       listed = Arrays.copyOf(listed, 2 * n);
       listedSet = Arrays.copyOf(listedSet, 2 * n);
     }
@@ -78,7 +76,6 @@ final class Graph {
       nodes[i] = node(sorted[i]);
       set.set(nodes[i]);
     }
-    listedNames[o] = sorted;
     listed[o] = nodes;
     listedSet[o] = set;
   }
@@ -89,7 +86,6 @@ final class Graph {
     if (o < 0 || listed[o] == null) {
       return;
     }
-    listedNames[o] = null;
     listed[o] = null;
     listedSet[o] = null;
     states--;
@@ -107,13 +103,16 @@ final class Graph {
     generation++;
     Map<String, String[]> kept = new HashMap<>();
     for (int i = 0; i < names.size(); i++) {
-      if (listedNames[i] != null) {
-        kept.put(names.get(i), listedNames[i]);
+      if (listed[i] != null) {
+        String[] sorted = new String[listed[i].length];
+        for (int k = 0; k < sorted.length; k++) {
+          sorted[k] = names.get(listed[i][k]);
+        }
+        kept.put(names.get(i), sorted);
       }
     }
     index.clear();
     names.clear();
-    Arrays.fill(listedNames, null);
     Arrays.fill(listed, null);
     Arrays.fill(listedSet, null);
     for (Map.Entry<String, String[]> e : kept.entrySet()) {

@@ -181,10 +181,7 @@ final class Link {
    * @throws IOException when the link is closed or the write fails (the link is then closed)
    */
   void send(byte[] frame) throws IOException {
-    if (closed.get()) {
-      throw new IOException("link to " + peerName + " is closed");
-    }
-    queue.offer(frame);
+    queue(frame);
     if (Thread.currentThread() == reader && input.holdsWholeFrame()) {
       // A reply to one of a burst of calls: it leaves with the others once the burst is served.
       deferred = true;

@@ -41,7 +41,6 @@ final class Topology {
   private int[] firstHop = new int[0];
   private int[] lastDistance = new int[0];
   private int[] lastFirstHop = new int[0];
-  private int lastSize = -1;
   private int lastGeneration;
   /** The version of each state in {@link #states}, for {@link #isStale} on other threads. */
   private final Map<String, Long> versions = new ConcurrentHashMap<>();
@@ -186,12 +185,11 @@ final class Topology {
         firstHop[i] = -1;
       }
     }
-    if (n == lastSize && graph.generation() == lastGeneration
+    if (n == lastDistance.length && graph.generation() == lastGeneration
         && Arrays.equals(distance, 0, n, lastDistance, 0, n)
         && Arrays.equals(firstHop, 0, n, lastFirstHop, 0, n)) {
       return; // unchanged routes keep their instance
     }
-    lastSize = n;
     lastGeneration = graph.generation();
     lastDistance = Arrays.copyOf(distance, n);
     lastFirstHop = Arrays.copyOf(firstHop, n);
