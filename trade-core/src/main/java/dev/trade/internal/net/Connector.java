@@ -140,11 +140,7 @@ final class Connector {
   private void restart(InetSocketAddress address) {
     long chain = chains.get(address).incrementAndGet();
     backoff.put(address, MIN_BACKOFF_MS);
-    try {
-      timer.execute(() -> attempt(address, chain));
-    } catch (RejectedExecutionException e) {
-      // Closing: nothing to connect for.
-    }
+    schedule(address, chain, 0);
   }
 
   private void attempt(InetSocketAddress address, long chain) {
