@@ -4,26 +4,16 @@ import static java.nio.charset.StandardCharsets.UTF_8;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
-import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import dev.trade.TRADEContainer;
 import dev.trade.TRADEException;
-import dev.trade.TRADEInvocationException;
-import dev.trade.TRADERemoteException;
-import dev.trade.TRADESerializationException;
 import dev.trade.TRADEService;
-import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
-import java.io.IOException;
 import java.math.BigDecimal;
 import java.math.BigInteger;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.time.Duration;
 import java.time.Instant;
 import java.util.ArrayList;
@@ -37,9 +27,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.TreeMap;
 import java.util.UUID;
-import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
-import org.example.jvm.RemoteTypes.ArmJammedException;
 import org.example.jvm.RemoteTypes.Checkpoint;
 import org.example.jvm.RemoteTypes.Gripper;
 import org.example.jvm.RemoteTypes.Marked;
@@ -48,97 +36,21 @@ import org.example.jvm.RemoteTypes.Plan;
 import org.example.jvm.RemoteTypes.Pose;
 import org.example.jvm.RemoteTypes.Token;
 import org.example.jvm.RemoteTypes.Waypoint;
-import org.example.net.Await;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 
 /**
  * Every kind of value the codec knows travels from this JVM to a {@link ProviderMain} JVM and back,
- * through real sockets on loopback: same values, same classes, same enum constants, exceptions
- * rebuilt as their own class, service infos that still call and compare equal.
+ * through real sockets on loopback: same values, same classes, same enum constants, service infos
+ * that still call and compare equal. Exceptions, and classes not known or not allowed on one side:
+ * {@link CrossJvmExceptionsAndAllowListTest}.
  */
-class CrossJvmValuesTest {
-  private static final Duration START = Duration.ofSeconds(30);
-  /** A RuntimeException class that exists only on the provider's class path (compiled below). */
-  private static final String PROVIDER_ONLY = "org.example.jvm.extra.ProviderOnlyException";
-
-  private static JvmProcess provider;
-  private static TRADEContainer consumer;
-  private static String providerAddress;
-  private static final Map<String, TRADEServiceInfo> services = new LinkedHashMap<>();
-
-  @BeforeAll
-  static void start(@TempDir Path dir) throws Exception {
-    Path extraClasses = Files.createDirectories(dir.resolve("classes"));
-    provider = ProviderMain.launch(List.of(extraClasses), "CONTAINERNAME=provider",
-        "STARTACCEPTINGCONNECTIONS=true", "SERVERIPS=127.0.0.1@0");
-    // Compiled while the provider starts; its class loader finds the class when it is first used.
-    compileProviderOnlyException(dir.resolve("src"), extraClasses);
-    String address = ProviderMain.address(provider.awaitLine("READY ", START));
-    providerAddress = address;
-    consumer = TRADEContainer.builder().name("consumer")
-        .property("CONNECTCONTAINERS", address)
-        // Our value types, and the provider-only package (allowed, but its class is not known here).
-        .property("SERIALIZATIONALLOWLIST", "org.example.jvm.*;org.example.jvm.extra.*")
-        .build();
-    TRADEServiceConstraints fromProvider = new TRADEServiceConstraints().inGroups("provider");
-    Await.until(START, () -> consumer.getAvailableServices(fromProvider).size()
-        == ProviderMain.serviceCount(), "the provider's services");
-    for (TRADEServiceInfo s : consumer.getAvailableServices(fromProvider)) {
-      services.put(s.serviceName, s);
-    }
-  }
-
-  @AfterAll
-  static void stop() {
-    try {
-      if (consumer != null) {
-        consumer.close();
-      }
-    } finally {
-      if (provider != null) {
-        provider.close();
-      }
-    }
-  }
-
-  /** Compiles the provider-only exception with this JDK's javac, into {@code classes}. */
-  private static void compileProviderOnlyException(Path src, Path classes) throws Exception {
-    Path file = src.resolve(PROVIDER_ONLY.replace('.', '/') + ".java");
-    Files.createDirectories(file.getParent());
-    Files.writeString(file, "package org.example.jvm.extra;\n"
-        + "public class ProviderOnlyException extends RuntimeException {\n"
-        + "  public ProviderOnlyException(String message) { super(message); }\n"
-        + "}\n", UTF_8);
-    Process javac = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "javac").toString(),
-        "-J-XX:TieredStopAtLevel=1", "--release", "17", "-d", classes.toString(), file.toString())
-        .redirectErrorStream(true).start();
-    String output = new String(javac.getInputStream().readAllBytes(), UTF_8);
-    assertTrue(javac.waitFor(30, TimeUnit.SECONDS), "javac did not finish");
-    assertEquals(0, javac.exitValue(), "compiling " + file + ":\n" + output);
-  }
-
-  private static TRADEServiceInfo service(String name) {
-    TRADEServiceInfo s = services.get(name);
-    if (s == null) {
-      throw new AssertionError("the provider has no service " + name + "; it has " + services.keySet());
-    }
-    return s;
-  }
-
-  /** Sends {@code value} as the one argument of {@code echo(Object)} and returns the reply. */
-  private static Object echo(Object value) throws TRADEException {
-    return service("echo").call(Object.class, new Object[] {value});
-  }
-
-  private static String typeOnProvider(Object value) throws TRADEException {
+class CrossJvmValuesTest extends ProviderFixture {
+  private String typeOnProvider(Object value) throws TRADEException {
     return service("typeOf").call(String.class, new Object[] {value});
   }
 
   /** Equal after the round trip, of the same class, and of that class on the provider too. */
-  private static void assertTravels(Object value) throws TRADEException {
+  private void assertTravels(Object value) throws TRADEException {
     Object back = echo(value);
     assertEquals(value, back);
     if (value != null) {
@@ -345,67 +257,5 @@ class CrossJvmValuesTest {
     } finally {
       consumer.deregister(greeter);
     }
-  }
-
-  @Test
-  void serviceExceptionsAreRebuiltAsTheirOwnClass() {
-    TRADEInvocationException e = assertThrows(TRADEInvocationException.class,
-        () -> service("fail").call(void.class, "state"));
-    assertSame(IllegalStateException.class, e.getCause().getClass());
-    assertEquals("jammed", e.getCause().getMessage());
-    assertTrue(Arrays.stream(e.getCause().getStackTrace())
-        .anyMatch(f -> f.getClassName().equals(ProviderMain.Services.class.getName())
-            && f.getMethodName().equals("fail")), "the provider's stack trace travels");
-
-    e = assertThrows(TRADEInvocationException.class, () -> service("fail").call(void.class, "jammed"));
-    ArmJammedException jammed = assertInstanceOf(ArmJammedException.class, e.getCause());
-    assertEquals("gripper 2 jammed", jammed.getMessage());
-    assertSame(IOException.class, jammed.getCause().getClass());
-    assertEquals("sensor offline", jammed.getCause().getMessage());
-  }
-
-  @Test
-  void exceptionOfAClassUnknownHereArrivesAsRemoteException() {
-    assertThrows(ClassNotFoundException.class, () -> Class.forName(PROVIDER_ONLY));
-    TRADEInvocationException e = assertThrows(TRADEInvocationException.class,
-        () -> service("fail").call(void.class, PROVIDER_ONLY));
-    TRADERemoteException remote = assertInstanceOf(TRADERemoteException.class, e.getCause());
-    assertEquals(PROVIDER_ONLY, remote.getRemoteTypeName());
-    assertEquals(PROVIDER_ONLY + ": thrown by " + PROVIDER_ONLY, remote.getMessage());
-    assertTrue(remote.getStackTrace().length > 0, "the remote stack trace travels");
-  }
-
-  @Test
-  void exceptionOfAClassNotAllowedHereArrivesAsRemoteException() {
-    TRADEInvocationException e = assertThrows(TRADEInvocationException.class,
-        () -> service("fail").call(void.class, "secret"));
-    TRADERemoteException remote = assertInstanceOf(TRADERemoteException.class, e.getCause());
-    assertEquals("org.example.jvm.secret.Secrets$SecretException", remote.getRemoteTypeName());
-    assertTrue(remote.getMessage().endsWith("the code is 1234"), remote.getMessage());
-  }
-
-  @Test
-  void aCallerWithoutAllowListSettingsDecodesTheTypesItsOwnCodeNames() throws TRADEException {
-    try (TRADEContainer plain = TRADEContainer.builder().name("plain")
-        .property("CONNECTCONTAINERS", providerAddress)
-        .build()) {
-      TRADEServiceConstraints move = new TRADEServiceConstraints().inGroups("provider").name("move");
-      Await.until(START, () -> !plain.getAvailableServices(move).isEmpty(), "move on plain");
-      TRADEServiceInfo s = plain.getAvailableService(move);
-      assertEquals(new Pose(3, 2, 0, "map"), s.call(Pose.class, new Pose(1, 2, 0, "map"), 2.0));
-      TRADESerializationException e = assertThrows(TRADESerializationException.class,
-          () -> plain.getAvailableService(new TRADEServiceConstraints().inGroups("provider")
-              .name("secretCode")).call(Object.class));
-      assertTrue(e.getMessage().contains("SERIALIZATIONALLOWLIST"), e.getMessage());
-    }
-  }
-
-  @Test
-  void valueOfAClassNotAllowedHereIsRefusedByName() throws TRADEException {
-    TRADESerializationException e = assertThrows(TRADESerializationException.class,
-        () -> service("secretCode").call(Object.class));
-    assertTrue(e.getMessage().contains("org.example.jvm.secret.Secrets$Code"), e.getMessage());
-    assertTrue(e.getMessage().contains("SERIALIZATIONALLOWLIST"), e.getMessage());
-    assertEquals("the link still works", echo("the link still works"));
   }
 }

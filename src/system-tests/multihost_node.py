@@ -1,0 +1,195 @@
+"""Multi-host system test, the container processes: one HostNode JVM per host, started in its
+host's network namespace, fed commands on its standard input, its standard output read line by
+line so that a step can wait for the line it expects (Node.expect) and, at the end, list the
+lines no step expected (Node.unconsumed). Used by multihost_scenario.py; see docs/system-tests.md.
+"""
+
+import ctypes
+import os
+import re
+import signal
+import subprocess
+import sys
+import threading
+import time
+
+from multihost_net import StepFailure, java_binary
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+CLASSPATH = os.pathsep.join([os.path.join(ROOT, "trade-core", "target", "classes"),
+                             os.path.join(ROOT, "trade-examples", "target", "classes")])
+MAIN_CLASS = "dev.trade.examples.system.HostNode"
+
+# Every node runs with these failure detection settings, set explicitly because the scenario's
+# bounds depend on them: a silent peer is declared gone after FAILURETIMEOUT (default 3000 ms),
+# checked every HEARTBEATINTERVAL (default 1000 ms).
+FAILURE_TIMEOUT_MS = 3000
+HEARTBEAT_MS = 1000
+STARTUP_S = 20          # JVM start, discovery, links, tables: normally about 1 s
+
+
+_prctl = ctypes.CDLL(None).prctl if sys.platform.startswith("linux") else None
+
+
+def die_with_parent():
+    """In a node's process before exec: SIGKILL it when this test dies, even by SIGKILL. (A node
+    also exits at the end of its input, but a node stopped by SIGSTOP reads nothing.) Only a
+    prepared foreign call happens here, between fork and exec."""
+    PR_SET_PDEATHSIG = 1
+    _prctl(PR_SET_PDEATHSIG, int(signal.SIGKILL), 0, 0, 0)
+
+
+class Line:
+    def __init__(self, text, received):
+        self.text = text
+        self.received = received        # time.time() when the harness read it
+        m = re.search(r" t=(\d+)$", text)
+        self.stamp = int(m.group(1)) / 1000.0 if m else received   # when the node printed it
+        self.consumed = False
+
+    def __str__(self):
+        return self.text
+
+
+class Node:
+    """One HostNode JVM in a host's namespace, fed commands on stdin; stdout read line by line."""
+
+    def __init__(self, topology, host, log_dir):
+        self.topology = topology
+        self.host = host
+        self.log_dir = log_dir
+        self.incarnation = 0
+        self.proc = None
+        self.lines = []
+        self.cond = threading.Condition()
+        self.past = []          # (incarnation, lines, quit_at) of earlier processes
+        self.quit_at = None
+        self.eof = False
+        self.id = None
+
+    def start(self, settings):
+        """Starts a new incarnation with these TRADE settings (KEY=VALUE strings); see wait_ready."""
+        if self.proc is not None:
+            self.past.append((self.incarnation, self.lines, self.quit_at))
+        self.incarnation += 1
+        self.lines = []
+        self.eof = False
+        self.quit_at = None
+        self.id = None
+        cmd = self.topology.exec_prefix(self.host) + [
+            java_binary(), "-XX:TieredStopAtLevel=1", "-cp", CLASSPATH, MAIN_CLASS,
+            self.host,
+            "DISCOVERYRANGE=subnet",
+            "FAILURETIMEOUT=%d" % FAILURE_TIMEOUT_MS,
+            "HEARTBEATINTERVAL=%d" % HEARTBEAT_MS,
+        ] + list(settings)
+        self.settings = " ".join(settings) or "(defaults)"
+        base = os.path.join(self.log_dir, "%s-%d" % (self.host, self.incarnation))
+        self.err_path = base + ".log"
+        self.out_path = base + ".out"
+        err = open(self.err_path, "w")
+        self.started = time.time()
+        self.proc = subprocess.Popen(cmd, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=err,
+                                     text=True, bufsize=1, start_new_session=True,
+                                     preexec_fn=die_with_parent)
+        err.close()
+        proc, lines, out_path = self.proc, self.lines, self.out_path
+        threading.Thread(target=self._read, args=(proc, lines, out_path), daemon=True).start()
+
+    def wait_ready(self):
+        ready = self.expect(r"^READY ", STARTUP_S)
+        m = re.search(r" id=(\S+) pid=(\d+)", ready.text)
+        self.id = m.group(1)
+        if int(m.group(2)) != self.proc.pid:
+            raise StepFailure("%s's JVM has pid %s, not the started process %d" %
+                              (self.host, m.group(2), self.proc.pid))
+        return ready
+
+    def _read(self, proc, lines, out_path):
+        with open(out_path, "w") as out:
+            for text in proc.stdout:
+                text = text.rstrip("\n")
+                out.write(text + "\n")
+                out.flush()
+                with self.cond:
+                    lines.append(Line(text, time.time()))
+                    self.cond.notify_all()
+        with self.cond:
+            if lines is self.lines:
+                self.eof = True
+            self.cond.notify_all()
+
+    def send(self, command):
+        if command == "quit":
+            with self.cond:
+                self.quit_at = len(self.lines)
+        try:
+            self.proc.stdin.write(command + "\n")
+            self.proc.stdin.flush()
+        except (BrokenPipeError, OSError) as e:
+            raise StepFailure("cannot send '%s' to %s: %s" % (command, self.host, e))
+
+    def expect(self, pattern, timeout):
+        """The first unconsumed line matching pattern, waiting until the deadline."""
+        regex = re.compile(pattern)
+        deadline = time.time() + timeout
+        with self.cond:
+            while True:
+                for line in self.lines:
+                    if not line.consumed and regex.search(line.text):
+                        line.consumed = True
+                        return line
+                if self.eof:
+                    raise StepFailure("%s exited (status %s) without printing /%s/%s" %
+                                      (self.host, self.proc.poll(), pattern, self._context()))
+                left = deadline - time.time()
+                if left <= 0:
+                    raise StepFailure("%s did not print /%s/ within %.1f s%s" %
+                                      (self.host, pattern, timeout, self._context()))
+                self.cond.wait(min(left, 0.2))
+
+    def pending(self, pattern):
+        """Whether the current process printed a line matching pattern that no expectation took."""
+        regex = re.compile(pattern)
+        with self.cond:
+            return any(not l.consumed and regex.search(l.text) for l in self.lines)
+
+    def unconsumed(self, pattern):
+        """(incarnation, line) of every process's lines matching pattern that no expectation
+        took, up to its quit command (a container that closes sees every other one leave)."""
+        regex = re.compile(pattern)
+        result = []
+        with self.cond:
+            for incarnation, lines, quit_at in self.past + [(self.incarnation, self.lines, self.quit_at)]:
+                for l in lines if quit_at is None else lines[:quit_at]:
+                    if not l.consumed and regex.search(l.text):
+                        result.append((incarnation, l))
+        return result
+
+    def _context(self):
+        recent = [l.text for l in self.lines[-8:]]
+        return "; its last lines: %s; log: %s" % (recent, self.err_path)
+
+    def kill(self, sig=signal.SIGKILL):
+        before = time.time()
+        os.kill(self.proc.pid, sig)
+        return before
+
+    def wait_exit(self, timeout):
+        try:
+            return self.proc.wait(timeout)
+        except subprocess.TimeoutExpired:
+            raise StepFailure("%s did not exit within %d s%s" % (self.host, timeout, self._context()))
+
+    def stop(self):
+        """Ends the process whatever its state (cleanup)."""
+        if self.proc and self.proc.poll() is None:
+            try:
+                os.kill(self.proc.pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
+            try:
+                self.proc.wait(5)
+            except subprocess.TimeoutExpired:
+                pass
+
