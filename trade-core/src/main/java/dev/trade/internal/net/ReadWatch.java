@@ -20,6 +20,7 @@ import java.util.concurrent.locks.LockSupport;
  *
  * <p>The watch ticks only while calls are being served: after a few ticks without any, it parks
  * until the next one starts, so idle containers (and a hundred of them on one host) cost nothing,
+ * and its thread starts with the first served call, so a container that serves none has none,
  * and a container answering a control loop's calls at 10 to 100 Hz wakes it a few times per call,
  * not a thousand times a second. Under a steady stream of calls it ticks once a millisecond and
  * nobody wakes it. Safe for concurrent use.
@@ -34,7 +35,8 @@ final class ReadWatch implements AutoCloseable {
 
   private final Collection<Link> links;
   private final Executor executor;
-  private final Thread thread;
+  private final String name;
+  private volatile Thread thread; // from the first served call on
   private volatile boolean parked;
   private volatile boolean closed;
 
@@ -45,21 +47,40 @@ final class ReadWatch implements AutoCloseable {
   ReadWatch(Collection<Link> links, Executor executor, String name) {
     this.links = links;
     this.executor = executor;
-    this.thread = new Thread(this::run, "trade-readwatch-" + name);
-    thread.setDaemon(true);
-    thread.start();
+    this.name = name;
   }
 
-  /** Called by a link's reading thread as it starts serving a call: wakes the watch if it sleeps. */
+  /**
+   * Called by a link's reading thread as it starts serving a call: wakes the watch if it sleeps,
+   * starts it at the first call.
+   */
   void serving() {
-    if (parked) {
-      LockSupport.unpark(thread);
+    Thread t = thread;
+    if (t == null) {
+      start();
+    } else if (parked) {
+      LockSupport.unpark(t);
     }
   }
 
-  /** Whether the watch sleeps until the next served call (for tests). */
+  private synchronized void start() {
+    if (thread == null && !closed) {
+      Thread t = new Thread(this::run, "trade-readwatch-" + name);
+      t.setDaemon(true);
+      t.start();
+      thread = t; // after start: a concurrent serving() must not unpark a thread not yet started
+    }
+  }
+
+  /** Whether the watch sleeps until the next served call, or has not started yet (for tests). */
   boolean isParked() {
-    return parked && thread.getState() == Thread.State.WAITING;
+    Thread t = thread;
+    return t == null || parked && t.getState() == Thread.State.WAITING;
+  }
+
+  /** Whether the watch's thread has started (for tests). */
+  boolean isStarted() {
+    return thread != null;
   }
 
   /**
@@ -77,7 +98,7 @@ final class ReadWatch implements AutoCloseable {
   }
 
   private void run() {
-    int idle = IDLE_TICKS; // nothing to watch before the first call
+    int idle = 0; // started by a call: watch it
     while (!closed) {
       if (tick()) {
         idle = 0;
@@ -106,8 +127,11 @@ final class ReadWatch implements AutoCloseable {
   }
 
   @Override
-  public void close() {
+  public synchronized void close() {
     closed = true;
-    LockSupport.unpark(thread);
+    Thread t = thread;
+    if (t != null) {
+      LockSupport.unpark(t);
+    }
   }
 }

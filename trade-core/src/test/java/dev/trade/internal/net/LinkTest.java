@@ -2,6 +2,7 @@ package dev.trade.internal.net;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -204,6 +205,7 @@ class LinkTest {
     List<Link> watched = new CopyOnWriteArrayList<>();
     try (ReadWatch watching = new ReadWatch(watched, workers, "sleepy")) {
       awaitParked(watching, "before any call");
+      assertFalse(watching.isStarted(), "a thread before any call");
       Link link = new Link(near, peer("C"), true, 1 << 20);
       watched.add(link);
       Serving h = new Serving(l -> { });
@@ -212,6 +214,7 @@ class LinkTest {
         sendFromFar(frame(i));
         assertEquals(i, h.seen.poll(5, TimeUnit.SECONDS));
       }
+      assertTrue(watching.isStarted(), "started by the first call");
       awaitParked(watching, "after the calls");
       link.close("done");
     }
