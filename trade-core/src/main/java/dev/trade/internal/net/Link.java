@@ -62,8 +62,8 @@ final class Link {
   private volatile String closeReason;
   // Set when the link is to close once the queued frames are written.
   private volatile String closeWhenDrained;
-  // The reading thread queued frames of its own and must flush them before it blocks.
-  private volatile boolean deferred;
+  /** Whether the reading thread is handing out frames read together with more; see send. */
+  private volatile boolean burst;
   private Handler handler;
   private ReadWatch watch;
   // The thread in the read loop; null while reading moves to another one.
@@ -182,9 +182,10 @@ final class Link {
    */
   void send(byte[] frame) throws IOException {
     queue(frame);
-    if (Thread.currentThread() == reader && input.holdsWholeFrame()) {
-      // A reply to one of a burst of calls: it leaves with the others once the burst is served.
-      deferred = true;
+    if (burst) {
+      // The reading thread hands out frames read together (calls to serve here, or replies that
+      // wake callers who call again at once): it writes what they send, in one system call,
+      // before it reads again. Whoever reads after it sees the same, as a burst ends before then.
       return;
     }
     writeQueued();
@@ -209,10 +210,26 @@ final class Link {
     writeQueued();
   }
 
-  /** Writes the frames the reading thread queued of its own (called before it may block). */
-  private void flushDeferred() throws IOException {
-    deferred = false;
-    writeQueued();
+  /**
+   * Ends a burst and writes what was sent during it (reading thread, before it may block in a
+   * read). Guarded like a served call: should the peer not read (its reader busy writing to us),
+   * the watch hands reading to another thread after a tick, so two links that write to each other
+   * cannot wait for each other for ever.
+   *
+   * @return true if this thread still reads the link
+   */
+  private boolean endBurst() {
+    burst = false; // before looking at the queue: a sender that saw it true queued before this
+    if (queue.isEmpty()) {
+      return true;
+    }
+    return serveHere(() -> {
+      try {
+        writeQueued();
+      } catch (IOException e) {
+        // writeQueued closed the link; the read loop ends with its reason.
+      }
+    });
   }
 
   /**
@@ -260,10 +277,9 @@ final class Link {
     reader = Thread.currentThread();
     String reason = "closed";
     try {
-      flushDeferred(); // frames a reader before this one left queued
       while (!closed.get()) {
-        if (deferred && input.buffered() == 0) {
-          flushDeferred(); // before blocking in read
+        if (!input.holdsWholeFrame() && !endBurst()) {
+          return; // the flush blocked and reading went on in another thread
         }
         int length;
         try {
@@ -303,6 +319,7 @@ final class Link {
           break;
         }
         lastReceived = System.nanoTime();
+        burst = input.holdsWholeFrame(); // more to hand out after this one: see send
         if (!handler.frame(this, type, payload)) {
           return; // reading went on in another thread while this one served a call
         }

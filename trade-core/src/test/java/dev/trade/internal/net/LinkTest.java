@@ -27,6 +27,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.function.Consumer;
 import org.example.net.Await;
 import org.junit.jupiter.api.AfterEach;
@@ -281,5 +282,90 @@ class LinkTest {
       assertEquals(2 + 7, length, "reply " + i);
     }
     link.close("done");
+  }
+
+  @Test
+  void framesOtherThreadsSendDuringABurstLeaveWhenItEnds() throws Exception {
+    int burst = 20;
+    Link link = new Link(near, peer("C"), true, 1 << 20);
+    List<Integer> bytesAtTheFarEnd = new CopyOnWriteArrayList<>();
+    Serving h = new Serving(l -> {
+      // A caller this frame wakes calls again at once, from its own thread; on loopback a frame
+      // written is at the far end when the write returns.
+      sendOn(l, frame(9));
+      try {
+        bytesAtTheFarEnd.add(far.getInputStream().available());
+      } catch (IOException e) {
+        throw new UncheckedIOException(e);
+      }
+    });
+    link.start(h, watch);
+    byte[][] frames = new byte[burst][];
+    Arrays.fill(frames, frame(1));
+    sendFromFar(concat(frames)); // one write: read as one burst
+    DataInputStream sent = new DataInputStream(far.getInputStream());
+    far.setSoTimeout(5_000);
+    for (int i = 0; i < burst; i++) {
+      assertEquals(2 + 9, sent.readInt(), "frame " + i);
+      sent.readFully(new byte[2 + 9]);
+    }
+    Await.until(Duration.ofSeconds(5), () -> bytesAtTheFarEnd.size() == burst, "every frame handled");
+    assertEquals(0, bytesAtTheFarEnd.get(0), "written before the burst ended");
+    assertEquals(0, bytesAtTheFarEnd.get(burst - 2), "written before the burst ended");
+    link.close("done");
+  }
+
+  @Test
+  void aFlushThatBlocksAtTheEndOfABurstDoesNotStopReading() throws Exception {
+    List<Link> watched = new CopyOnWriteArrayList<>();
+    try (ReadWatch watching = new ReadWatch(watched, workers, "flushing")) {
+      Link link = new Link(near, peer("C"), true, 1 << 20);
+      watched.add(link);
+      // Far more than the socket buffers hold while the far end reads nothing (as when its reader
+      // is busy writing to us): the write at the end of the burst blocks.
+      near.setSendBufferSize(64 << 10);
+      far.setReceiveBufferSize(64 << 10);
+      byte[] big = frame(16 << 20);
+      AtomicBoolean once = new AtomicBoolean();
+      Serving h = new Serving(l -> {
+        if (once.compareAndSet(false, true)) {
+          try {
+            l.send(big); // a reply during a burst: queued, the burst's end writes it
+          } catch (IOException e) {
+            throw new UncheckedIOException(e);
+          }
+        }
+      });
+      link.start(h, watching);
+      sendFromFar(concat(frame(1), frame(2)));
+      assertEquals(1, h.seen.poll(5, TimeUnit.SECONDS));
+      assertEquals(2, h.seen.poll(5, TimeUnit.SECONDS));
+      sendFromFar(frame(3));
+      assertEquals(3, h.seen.poll(5, TimeUnit.SECONDS), "read while the write blocks");
+      link.close("done");
+    }
+  }
+
+  /** Sends {@code frame} on {@code link} from another thread, and waits until send returns. */
+  private void sendOn(Link link, byte[] frame) {
+    try {
+      CompletableFuture.runAsync(() -> {
+        try {
+          link.send(frame);
+        } catch (IOException e) {
+          throw new UncheckedIOException(e);
+        }
+      }, workers).get(5, TimeUnit.SECONDS);
+    } catch (Exception e) {
+      throw new IllegalStateException("send did not return", e);
+    }
+  }
+
+  private static byte[] concat(byte[]... frames) {
+    ByteSink all = new ByteSink(64);
+    for (byte[] f : frames) {
+      all.writeBytes(f, 0, f.length);
+    }
+    return all.toByteArray();
   }
 }
