@@ -16,15 +16,17 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.Executors;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.LongAdder;
 import java.util.function.Supplier;
 
 /**
- * The announcing half of {@link Discovery}: one daemon scheduler thread that sends an
- * announcement per interface to the group in a burst at start, then every interval and on
- * request; and one straight to a newcomer, in answer to its first announcement.
+ * The announcing half of {@link Discovery}: sends an announcement per interface to the group in a
+ * burst at start, then every interval and on request; and one straight to a newcomer, in answer
+ * to its first announcement. It sends on a scheduler thread: the container's timer when discovery
+ * is given one (one thread fewer to start per container), else a daemon thread of its own.
  *
  * <p>Every send happens under {@code lock}, and so do the switches: once {@link #setOn(boolean)
  * setOn(false)} or {@link #close()} has returned, nothing more is sent. Thread-safe.
@@ -37,12 +39,14 @@ final class Announcer {
   private final String systemId;
   private final String containerId;
   private final String containerName;
-  private final byte[] key;
+  private final Signer signer; // the scheduler thread's, guarded by lock like every send
   private final InetSocketAddress target;
   private final Supplier<List<InetSocketAddress>> addresses;
   private final List<NetworkInterface> interfaces;
   private final List<DatagramChannel> channels;
   private final ScheduledExecutorService scheduler;
+  private final boolean ownScheduler;
+  private volatile ScheduledFuture<?> steady;
   private final AtomicLong sequence = new AtomicLong();
   private final LongAdder sent = new LongAdder();
   /** Newcomers with an answer pending, by the address their announcement came from. */
@@ -50,24 +54,34 @@ final class Announcer {
   private final Object lock = new Object();
   // Guarded by lock: the last state logged per interface, so that only changes are logged.
   private final Map<String, String> states = new HashMap<>();
+  // Guarded by lock: each interface as last looked up, and when (nanoTime); see current(int).
+  private final NetworkInterface[] current;
+  private final long[] lookedUp;
   private volatile boolean on; // Written under lock.
   private boolean closed; // Guarded by lock.
 
-  /** @param channels one per interface, in the same order; closed by {@link #close()} */
+  /**
+   * @param channels one per interface, in the same order; closed by {@link #close()}
+   * @param scheduler where to send; null for a thread of its own, named {@code threadName}. A
+   *     given one is not shut down by {@link #close()}, only this announcer's tasks end.
+   */
   Announcer(String systemId, String containerId, String containerName, byte[] key,
       InetSocketAddress target, Supplier<List<InetSocketAddress>> addresses,
       List<NetworkInterface> interfaces, List<DatagramChannel> channels, boolean on,
-      String threadName) {
+      ScheduledExecutorService scheduler, String threadName) {
     this.systemId = systemId;
     this.containerId = containerId;
     this.containerName = containerName;
-    this.key = key;
+    this.signer = new Signer(key);
     this.target = target;
     this.addresses = addresses;
     this.interfaces = List.copyOf(interfaces);
     this.channels = List.copyOf(channels);
+    this.current = this.interfaces.toArray(new NetworkInterface[0]);
+    this.lookedUp = new long[current.length];
     this.on = on;
-    this.scheduler = Executors.newSingleThreadScheduledExecutor(r -> {
+    this.ownScheduler = scheduler == null;
+    this.scheduler = scheduler != null ? scheduler : Executors.newSingleThreadScheduledExecutor(r -> {
       Thread t = new Thread(r, threadName);
       t.setDaemon(true);
       return t;
@@ -77,7 +91,11 @@ final class Announcer {
   void start(Duration interval) {
     scheduleBurst();
     long ms = interval.toMillis();
-    scheduler.scheduleWithFixedDelay(this::announceToGroup, ms, ms, TimeUnit.MILLISECONDS);
+    try {
+      steady = scheduler.scheduleWithFixedDelay(this::announceToGroup, ms, ms, TimeUnit.MILLISECONDS);
+    } catch (RejectedExecutionException e) {
+      // A given scheduler shut down: its container is closing.
+    }
   }
 
   /** Turning it on sends a burst, as at start. */
@@ -134,12 +152,20 @@ final class Announcer {
     return sent.sum();
   }
 
-  /** Stops the scheduler and closes the channels; waits for a send in progress. Idempotent. */
+  /**
+   * Stops announcing (and its own scheduler) and closes the channels; waits for a send in progress.
+   * Idempotent.
+   */
   void close() {
     synchronized (lock) {
       closed = true;
     }
-    scheduler.shutdownNow();
+    // Tasks still queued on a given scheduler find it closed and send nothing.
+    if (ownScheduler) {
+      scheduler.shutdownNow();
+    } else if (steady != null) {
+      steady.cancel(false);
+    }
     channels.forEach(Sockets::closeQuietly);
   }
 
@@ -173,7 +199,7 @@ final class Announcer {
         LOG.log(Level.WARNING, "Discovery could not get the listen addresses to announce", e);
         return;
       }
-      NetworkInterface nif = Interfaces.refresh(interfaces.get(i));
+      NetworkInterface nif = current(i);
       List<InetSocketAddress> mine = Interfaces.announceable(nif, listen);
       if (mine.isEmpty()) {
         note(nif, Level.INFO, "nothing to announce: " + (listen.isEmpty()
@@ -185,7 +211,7 @@ final class Announcer {
       try {
         // Non-blocking (the receiver reads answers from this channel): 0 means no room just now,
         // and the packet is lost, as a datagram may be anyway.
-        if (channels.get(i).send(ByteBuffer.wrap(a.encode(key)), to) == 0) {
+        if (channels.get(i).send(ByteBuffer.wrap(Packets.encode(a, signer)), to) == 0) {
           throw new IOException("the socket's send buffer is full");
         }
         sent.increment();
@@ -194,6 +220,20 @@ final class Announcer {
         note(nif, Level.WARNING, "cannot send: " + e);
       }
     }
+  }
+
+  /**
+   * The {@code i}th interface as it is now, looked up again at most once a second: a lookup takes
+   * system calls, and while a large system starts a container answers a newcomer every few
+   * milliseconds. A changed address (DHCP) is still announced within a second. Caller holds lock.
+   */
+  private NetworkInterface current(int i) {
+    long now = System.nanoTime();
+    if (lookedUp[i] == 0 || now - lookedUp[i] >= 1_000_000_000L) {
+      current[i] = Interfaces.refresh(interfaces.get(i));
+      lookedUp[i] = now;
+    }
+    return current[i];
   }
 
   // Caller holds lock.

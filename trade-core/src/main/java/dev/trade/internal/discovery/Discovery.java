@@ -16,6 +16,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
+import java.util.concurrent.ScheduledExecutorService;
 import java.util.function.Supplier;
 
 /**
@@ -104,7 +105,7 @@ public final class Discovery implements AutoCloseable {
     }
     String tag = "[" + b.containerName + "]";
     this.announcer = new Announcer(b.systemId, b.containerId, b.containerName, key, target,
-        b.addresses, interfaces, senders, b.broadcast, "trade-discovery-send" + tag);
+        b.addresses, interfaces, senders, b.broadcast, b.scheduler, "trade-discovery-send" + tag);
     Receiver r;
     try {
       r = new Receiver(receiveChannel, senders, b.systemId, b.containerId, key, b.listener,
@@ -224,6 +225,7 @@ public final class Discovery implements AutoCloseable {
     private Duration maxClockSkew = ReplayGuard.DEFAULT_MAX_CLOCK_SKEW;
     private Duration reportInterval = Duration.ofSeconds(60);
     private Receiver.Observer observer = Receiver.Observer.NONE;
+    private ScheduledExecutorService scheduler;
 
     private Builder() {}
 
@@ -331,6 +333,16 @@ public final class Discovery implements AutoCloseable {
     /** The least time between two INFO/WARNING reports of one drop reason from one address. */
     Builder reportInterval(Duration interval) {
       this.reportInterval = Objects.requireNonNull(interval, "interval == null");
+      return this;
+    }
+
+    /**
+     * Sends announcements on {@code scheduler} instead of a thread of discovery's own; its tasks
+     * must be short (each send is). {@link Discovery#close()} ends discovery's tasks on it but does
+     * not shut it down. Default: a daemon thread of its own.
+     */
+    public Builder scheduler(ScheduledExecutorService scheduler) {
+      this.scheduler = Objects.requireNonNull(scheduler, "scheduler == null");
       return this;
     }
 

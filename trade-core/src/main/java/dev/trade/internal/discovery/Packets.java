@@ -16,8 +16,6 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Objects;
-import javax.crypto.Mac;
-import javax.crypto.spec.SecretKeySpec;
 
 /**
  * The wire format of announcements: fixed layout, big-endian, never serialized objects.
@@ -86,6 +84,10 @@ final class Packets {
   }
 
   static byte[] encode(Announcement a, byte[] key) {
+    return encode(a, new Signer(key));
+  }
+
+  static byte[] encode(Announcement a, Signer signer) {
     ByteBuffer b = ByteBuffer.allocate(MAX_PACKET);
     b.put(MAGIC).put((byte) VERSION);
     putText(b, a.systemId());
@@ -97,7 +99,7 @@ final class Packets {
       byte[] raw = s.getAddress().getAddress();
       b.put((byte) (raw.length == 4 ? 4 : 6)).put(raw).putShort((short) s.getPort());
     }
-    b.put(mac(key, b.array(), b.position()));
+    b.put(signer.sign(b.array(), b.position()));
     return Arrays.copyOf(b.array(), b.position());
   }
 
@@ -113,6 +115,12 @@ final class Packets {
    * @throws IndexOutOfBoundsException if {@code len} is negative or beyond {@code packet}
    */
   static Announcement decode(byte[] packet, int len, String systemId, byte[] key)
+      throws BadPacketException {
+    return decode(packet, len, systemId, new Signer(key));
+  }
+
+  /** As {@link #decode(byte[], int, String, byte[])}, with the key's {@link Signer}. */
+  static Announcement decode(byte[] packet, int len, String systemId, Signer signer)
       throws BadPacketException {
     Objects.checkFromIndexSize(0, len, packet.length);
     if (len > MAX_PACKET) {
@@ -142,7 +150,7 @@ final class Packets {
           "other system id '" + printable(packet, HEADER, s) + "'");
     }
     int signed = len - MAC_LENGTH;
-    byte[] expected = mac(key, packet, signed);
+    byte[] expected = signer.sign(packet, signed);
     // Constant time: a timing difference would let an attacker guess the HMAC byte by byte.
     if (!MessageDigest.isEqual(expected, Arrays.copyOfRange(packet, signed, len))) {
       throw new BadPacketException(Reason.BAD_HMAC, "bad HMAC: wrong CREDENTIALS?");
@@ -219,17 +227,6 @@ final class Packets {
   private static void putText(ByteBuffer b, String s) {
     byte[] bytes = s.getBytes(StandardCharsets.UTF_8);
     b.put((byte) bytes.length).put(bytes);
-  }
-
-  private static byte[] mac(byte[] key, byte[] data, int len) {
-    try {
-      Mac mac = Mac.getInstance("HmacSHA256");
-      mac.init(new SecretKeySpec(key, "HmacSHA256"));
-      mac.update(data, 0, len);
-      return mac.doFinal();
-    } catch (GeneralSecurityException e) {
-      throw new AssertionError("every JDK has HmacSHA256", e);
-    }
   }
 
   /** Unauthenticated text from a packet, made safe for a log line. */

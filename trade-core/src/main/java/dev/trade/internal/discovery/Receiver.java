@@ -47,7 +47,7 @@ final class Receiver {
   private final Selector selector;
   private final String systemId;
   private final String containerId;
-  private final byte[] key;
+  private final Signer signer; // receive thread only
   private final Discovery.Listener listener;
   private final Consumer<InetSocketAddress> newSender;
   private final Observer observer;
@@ -86,7 +86,7 @@ final class Receiver {
     }
     this.systemId = systemId;
     this.containerId = containerId;
-    this.key = key;
+    this.signer = new Signer(key);
     this.listener = listener;
     this.newSender = newSender;
     this.observer = observer;
@@ -186,7 +186,7 @@ final class Receiver {
     Announcement a;
     boolean isNew;
     try {
-      a = Packets.decode(packet, len, systemId, key);
+      a = Packets.decode(packet, len, systemId, signer);
       if (a.containerId().equals(containerId)) {
         throw new BadPacketException(Reason.OWN, "our own announcement");
       }

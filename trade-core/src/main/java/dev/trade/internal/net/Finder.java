@@ -90,6 +90,7 @@ final class Finder implements AutoCloseable {
         .listener(this::heard)
         .broadcast(broadcast)
         .discovery(discover)
+        .scheduler(timer)
         .start();
     this.sweep = timer.scheduleWithFixedDelay(this::sweep, SWEEP_MS, SWEEP_MS, TimeUnit.MILLISECONDS);
   }

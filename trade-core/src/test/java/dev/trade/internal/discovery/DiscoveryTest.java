@@ -15,8 +15,11 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
+import java.util.concurrent.ScheduledThreadPoolExecutor;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Consumer;
+import org.example.net.Await;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -288,6 +291,31 @@ class DiscoveryTest {
     Recorder rb = new Recorder();
     start("alpha", "s3cret", "b", 7002, rb, b -> b.interval(FAST));
     rb.awaitDrops(Reason.OWN, 1);
+  }
+
+  @Test
+  void aGivenSchedulerSendsAndCloseEndsItsTasksButNotTheScheduler() throws Exception {
+    ScheduledThreadPoolExecutor timer = new ScheduledThreadPoolExecutor(1);
+    timer.setRemoveOnCancelPolicy(true);
+    try {
+      Recorder ra = new Recorder();
+      Recorder rb = new Recorder();
+      Discovery a = start("alpha", "s3cret", "a", 7001, ra, b -> b.interval(FAST).scheduler(timer));
+      start("alpha", "s3cret", "b", 7002, rb, b -> b.interval(FAST));
+      rb.awaitHeard("a", 3); // the burst and steady announcements, all sent on the timer
+      assertFalse(Thread.getAllStackTraces().keySet().stream()
+          .anyMatch(t -> t.getName().equals("trade-discovery-send[name-a]")), "a thread of its own");
+      a.close();
+      // The burst's one-shot tasks have run by now; the steady task would stay queued for ever.
+      Await.until(Duration.ofSeconds(5), () -> timer.getQueue().isEmpty(),
+          "discovery's tasks to leave the timer");
+      assertFalse(timer.isShutdown());
+      long sent = a.sentCount();
+      timer.submit(() -> { }).get(5, TimeUnit.SECONDS); // anything queued meanwhile has run
+      assertEquals(sent, a.sentCount());
+    } finally {
+      timer.shutdownNow();
+    }
   }
 
   private Discovery start(String system, String credentials, String id, int listenPort,
