@@ -64,6 +64,8 @@ final class Link {
   private volatile String closeWhenDrained;
   /** Whether the reading thread is handing out frames read together with more; see send. */
   private volatile boolean burst;
+  /** Whether a frame was sent, and perhaps left for the end of a burst, since the last look. */
+  private volatile boolean deferred;
   private Handler handler;
   private ReadWatch watch;
   // The thread in the read loop; null while reading moves to another one.
@@ -182,12 +184,14 @@ final class Link {
    */
   void send(byte[] frame) throws IOException {
     queue(frame);
+    deferred = true; // before looking at burst, see endBurst
     if (burst) {
       // The reading thread hands out frames read together (calls to serve here, or replies that
       // wake callers who call again at once): it writes what they send, in one system call,
       // before it reads again. Whoever reads after it sees the same, as a burst ends before then.
       return;
     }
+    deferred = false;
     writeQueued();
   }
 
@@ -219,10 +223,11 @@ final class Link {
    * @return true if this thread still reads the link
    */
   private boolean endBurst() {
-    burst = false; // before looking at the queue: a sender that saw it true queued before this
-    if (queue.isEmpty()) {
-      return true;
+    burst = false; // before looking at deferred: a sender that saw burst true set it before this
+    if (!deferred) {
+      return true; // what others queued (the control thread's floods) they write themselves
     }
+    deferred = false;
     return serveHere(() -> {
       try {
         writeQueued();
