@@ -3,7 +3,6 @@ package dev.trade.internal.net;
 import dev.trade.TRADEException;
 import dev.trade.internal.call.Invocation;
 import dev.trade.internal.codec.Codec;
-import dev.trade.internal.config.DiscoveryRange;
 import dev.trade.internal.config.PeerAddress;
 import dev.trade.internal.config.Settings;
 import dev.trade.internal.registry.LocalService;
@@ -58,6 +57,7 @@ public final class Network implements AutoCloseable {
   private final Replication replication;
   private final ReadWatch readWatch;
   private final Dispatch dispatch;
+  private final DiscoverySwitches discovery;
   private final Map<UUID, Link> links = new ConcurrentHashMap<>();
   /**
    * Every link whose reader runs, registered in {@link #links} or not yet: heartbeats and the
@@ -66,8 +66,6 @@ public final class Network implements AutoCloseable {
    */
   private final Set<Link> live = ConcurrentHashMap.newKeySet();
   private final Map<InetSocketAddress, UUID> dialled = new ConcurrentHashMap<>();
-  // Guarded by this.
-  private Finder finder;
   private volatile boolean closed;
 
   /**
@@ -116,6 +114,8 @@ public final class Network implements AutoCloseable {
             return peer != null && links.containsKey(peer);
           }
         });
+    this.discovery = new DiscoverySwitches(settings, self, name, connector, links::containsKey,
+        timer, () -> closed);
     registry.addListener(
         (added, removed) -> replication.localChanged(added, removed, this::onControl));
   }
@@ -127,7 +127,7 @@ public final class Network implements AutoCloseable {
    */
   public void start() throws IOException {
     if (settings.startAcceptingConnections() || settings.startBroadcast()) {
-      listen();
+      discovery.listen();
     }
     for (PeerAddress a : settings.connectContainers()) {
       connector.keepConnected(new InetSocketAddress(a.host(), a.port()));
@@ -135,52 +135,8 @@ public final class Network implements AutoCloseable {
     new Heartbeat(live, settings.heartbeatInterval(), settings.failureTimeout(), timer,
         workers).start();
     if (settings.startDiscovery() || settings.startBroadcast()) {
-      finder(settings.startBroadcast(), settings.startDiscovery());
+      discovery.finder(settings.startBroadcast(), settings.startDiscovery());
     }
-  }
-
-  /**
-   * Listens on SERVERIPS, or where discovery can reach: loopback for the {@code localhost} range,
-   * every interface for {@code subnet} (announced per interface, never as a wildcard).
-   */
-  private synchronized void listen() throws IOException {
-    if (!connector.listening().isEmpty()) {
-      return;
-    }
-    List<PeerAddress> listen = settings.serverAddresses();
-    if (listen.isEmpty()) {
-      listen = List.of(new PeerAddress(
-          settings.discoveryRange() == DiscoveryRange.SUBNET ? "0.0.0.0" : "127.0.0.1", 0));
-    }
-    for (PeerAddress a : listen) {
-      try {
-        connector.listen(new InetSocketAddress(a.host(), a.port()));
-      } catch (IOException e) {
-        throw new IOException("cannot listen on SERVERIPS address " + a + ": " + e.getMessage(), e);
-      }
-    }
-  }
-
-  /** A container left or died (routing lost it): discovery stops counting it at once. */
-  private void unreachable(UUID container) {
-    if (closed) {
-      return;
-    }
-    Finder f;
-    synchronized (this) {
-      f = finder;
-    }
-    if (f != null) {
-      f.forget(container);
-    }
-  }
-
-  private synchronized Finder finder(boolean broadcast, boolean discover) throws IOException {
-    if (finder == null && !closed) {
-      finder = new Finder(settings, self, name, connector::listening, links::containsKey,
-          connector, timer, broadcast, discover);
-    }
-    return finder;
   }
 
   /**
@@ -189,10 +145,7 @@ public final class Network implements AutoCloseable {
    * @throws IOException if discovery has to start and cannot open its socket
    */
   public void setDiscovery(boolean on) throws IOException {
-    Finder f = finder(false, on);
-    if (f != null) {
-      f.setDiscovery(on);
-    }
+    discovery.setDiscovery(on);
   }
 
   /**
@@ -202,26 +155,22 @@ public final class Network implements AutoCloseable {
    * @throws IOException if a listen socket or the discovery socket cannot be opened
    */
   public void setBroadcast(boolean on) throws IOException {
-    if (on) {
-      listen();
-    }
-    Finder f = finder(on, false);
-    if (f != null) {
-      f.setBroadcast(on);
-      if (on) {
-        f.announceNow();
-      }
-    }
+    discovery.setBroadcast(on);
   }
 
   /** Whether this container listens for announcements. */
-  public synchronized boolean isDiscovering() {
-    return finder != null && finder.isDiscovering();
+  public boolean isDiscovering() {
+    return discovery.isDiscovering();
   }
 
   /** Whether this container announces itself. */
-  public synchronized boolean isBroadcasting() {
-    return finder != null && finder.isBroadcasting();
+  public boolean isBroadcasting() {
+    return discovery.isBroadcasting();
+  }
+
+  /** A container left or died (routing lost it): discovery stops counting it at once. */
+  private void unreachable(UUID container) {
+    discovery.unreachable(container);
   }
 
   /** The addresses this container accepts connections on. */
@@ -370,11 +319,7 @@ public final class Network implements AutoCloseable {
       return;
     }
     closed = true;
-    synchronized (this) {
-      if (finder != null) {
-        finder.close();
-      }
-    }
+    discovery.close();
     connector.close();
     byte[] goodbye = Frames.finish(Frames.start(Wire.GOODBYE, 0));
     for (Link l : live) {

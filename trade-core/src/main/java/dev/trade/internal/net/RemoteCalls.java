@@ -22,7 +22,6 @@ import java.util.UUID;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutionException;
-import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
@@ -32,7 +31,8 @@ import java.util.function.Predicate;
 /**
  * Remote calls over links: the calling side (request ids, pending replies, deadlines), the providing
  * side (decoding arguments, running the host chain, encoding the reply) and
- * forwarding of calls and replies between containers that have no direct link.
+ * forwarding of calls and replies between containers that have no direct link. Replies find their
+ * way back to the caller through {@link Replies}.
  *
  * <p>A link's reading thread serves the calls it reads and completes the futures of replies; a
  * {@link ReadWatch} keeps the link read while a call takes long, so one slow service never stalls
@@ -40,7 +40,8 @@ import java.util.function.Predicate;
  */
 final class RemoteCalls {
   private static final Logger LOG = System.getLogger("dev.trade.net");
-  private static final int MAX_TEXT = 64 * 1024;
+  /** The longest text of a failure reply that callers read, in bytes of UTF-8. */
+  static final int MAX_TEXT = 64 * 1024;
   private static final int MAX_IDS = 4096;
 
   /** Finds the link a frame for a container leaves by. */
@@ -55,7 +56,7 @@ final class RemoteCalls {
   private final Codec codec;
   private final Router router;
   private final Network.Host host;
-  private final ScheduledExecutorService timer;
+  private final Replies replies;
   private final int maxFrame;
   private final AtomicLong nextId = new AtomicLong();
   private final Map<Long, Pending> pending = new ConcurrentHashMap<>();
@@ -70,7 +71,7 @@ final class RemoteCalls {
     this.codec = codec;
     this.router = router;
     this.host = host;
-    this.timer = timer;
+    this.replies = new Replies(self, router, timer, maxFrame);
     this.maxFrame = maxFrame;
   }
 
@@ -205,7 +206,7 @@ final class RemoteCalls {
   private void forward(Link from, int type, byte[] payload, UUID destination) {
     if (type == Wire.REPLY) {
       if (Frames.hops(payload) > 1) {
-        deliver(destination, Frames.forwarded(type, payload), 0);
+        replies.deliver(destination, Frames.forwarded(type, payload), 0);
       }
       return;
     }
@@ -213,8 +214,8 @@ final class RemoteCalls {
     if (next == null || Frames.hops(payload) <= 1) {
       LOG.log(Level.DEBUG, "dropping frame for unreachable {0}", destination);
       if (type == Wire.CALL) {
-        reply(from, payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer: container "
-            + destination + " is not reachable from " + self);
+        replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer:"
+            + " container " + destination + " is not reachable from " + self);
       }
       return;
     }
@@ -222,8 +223,8 @@ final class RemoteCalls {
       next.send(Frames.forwarded(type, payload));
     } catch (IOException e) {
       if (type == Wire.CALL) {
-        reply(from, payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer: the"
-            + " route to container " + destination + " was lost");
+        replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer:"
+            + " the route to container " + destination + " was lost");
       }
     }
   }
@@ -231,20 +232,20 @@ final class RemoteCalls {
   private void serve(Link from, byte[] payload) {
     ByteSource in = ByteSource.of(payload, Frames.ROUTING, payload.length - Frames.ROUTING);
     try {
-      in.readLong(); // request id, echoed by reply()
+      in.readLong(); // request id, echoed by Replies.replyStart
       long serviceId = in.readLong();
       int timeoutMs = in.readInt();
       int count = in.readVarUInt();
       LocalService s = host.local(serviceId);
       if (s == null) {
-        reply(from, payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer: service "
-            + serviceId + " was deregistered from container " + self);
+        replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer:"
+            + " service " + serviceId + " was deregistered from container " + self);
         return;
       }
       ServiceDescriptor d = s.descriptor();
       if (count != d.parameterTypeNames().size()) {
-        reply(from, payload, Wire.FAILED_BAD_ARGUMENTS, "Service " + d.signature() + " takes "
-            + d.parameterTypeNames().size() + " arguments but got " + count);
+        replies.reply(from, payload, Wire.FAILED_BAD_ARGUMENTS, "Service " + d.signature()
+            + " takes " + d.parameterTypeNames().size() + " arguments but got " + count);
         return;
       }
       ClassLoader loader = s.target().getClass().getClassLoader();
@@ -254,41 +255,41 @@ final class RemoteCalls {
       }
       long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
       Object result = host.invoke(new Invocation(d, args, deadline));
-      ByteSink out = replyStart(payload, Wire.OK);
+      ByteSink out = replies.replyStart(payload, Wire.OK);
       try {
         codec.write(result, out);
       } catch (TRADESerializationException e) {
-        reply(from, payload, Wire.FAILED_SERIALIZATION, "The result of " + d.signature()
+        replies.reply(from, payload, Wire.FAILED_SERIALIZATION, "The result of " + d.signature()
             + " cannot travel: " + e.getMessage());
         return;
       }
       byte[] frame = Frames.finish(out);
       if (!fits(frame)) {
-        reply(from, payload, Wire.FAILED_SERIALIZATION, "The result of " + d.signature()
+        replies.reply(from, payload, Wire.FAILED_SERIALIZATION, "The result of " + d.signature()
             + " cannot travel: the reply needs " + (frame.length - 4)
             + " bytes, more than MAXFRAMESIZE=" + maxFrame);
         return;
       }
-      sendReply(from, payload, frame);
+      replies.sendReply(from, payload, frame);
     } catch (TRADEInvocationException e) {
-      ByteSink out = replyStart(payload, Wire.FAILED_INVOCATION);
+      ByteSink out = replies.replyStart(payload, Wire.FAILED_INVOCATION);
       try {
         codec.write(e.getCause(), out);
         byte[] frame = Frames.finish(out);
         if (fits(frame)) {
-          sendReply(from, payload, frame);
+          replies.sendReply(from, payload, frame);
         } else {
-          reply(from, payload, Wire.FAILED_OTHER, e.getMessage());
+          replies.reply(from, payload, Wire.FAILED_OTHER, e.getMessage());
         }
       } catch (TRADESerializationException notEncodable) {
-        reply(from, payload, Wire.FAILED_OTHER, e.getMessage());
+        replies.reply(from, payload, Wire.FAILED_OTHER, e.getMessage());
       }
     } catch (TRADEServiceUnavailableException e) {
-      reply(from, payload, Wire.FAILED_UNAVAILABLE, e.getMessage());
+      replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, e.getMessage());
     } catch (TRADEBadArgumentsException e) {
-      reply(from, payload, Wire.FAILED_BAD_ARGUMENTS, e.getMessage());
+      replies.reply(from, payload, Wire.FAILED_BAD_ARGUMENTS, e.getMessage());
     } catch (MalformedValueException e) {
-      reply(from, payload, Wire.FAILED_SERIALIZATION, "malformed call: " + e.getMessage());
+      replies.reply(from, payload, Wire.FAILED_SERIALIZATION, "malformed call: " + e.getMessage());
       if (Frames.source(payload).equals(from.peerId)) {
         // The peer itself wrote bytes that are not a value: it is broken or hostile.
         LOG.log(Level.WARNING, "malformed call from {0}: {1}; closing the connection",
@@ -296,89 +297,17 @@ final class RemoteCalls {
         from.closeAfterSending("malformed call: " + e.getMessage());
       }
     } catch (TRADESerializationException e) {
-      reply(from, payload, Wire.FAILED_SERIALIZATION, e.getMessage());
+      replies.reply(from, payload, Wire.FAILED_SERIALIZATION, e.getMessage());
     } catch (TRADETimeoutException e) {
-      reply(from, payload, Wire.FAILED_TIMEOUT, e.getMessage());
+      replies.reply(from, payload, Wire.FAILED_TIMEOUT, e.getMessage());
     } catch (TRADEException | RuntimeException e) {
-      reply(from, payload, Wire.FAILED_OTHER, String.valueOf(e.getMessage()));
+      replies.reply(from, payload, Wire.FAILED_OTHER, String.valueOf(e.getMessage()));
     }
-  }
-
-  /** A reply frame's start: routing back to the caller, the request id and a status. */
-  ByteSink replyStart(byte[] call, int status) {
-    ByteSink out = Frames.start(Wire.REPLY, 64);
-    Frames.writeRouting(out, self, Frames.source(call), Wire.MAX_HOPS);
-    out.writeBytes(call, Frames.ROUTING, 8);
-    out.writeByte(status);
-    return out;
-  }
-
-  /** A reply carrying only a text, shortened to what callers read (MAX_TEXT bytes of UTF-8). */
-  private void reply(Link from, byte[] call, int status, String text) {
-    ByteSink out = replyStart(call, status);
-    out.writeText(clip(text == null ? "" : text));
-    sendReply(from, call, Frames.finish(out));
-  }
-
-  /**
-   * Cuts a reply text to what the caller reads ({@code MAX_TEXT} bytes) and a frame holds: a char
-   * takes at most 3 bytes of UTF-8.
-   */
-  private String clip(String text) {
-    int maxChars = Math.min(MAX_TEXT, maxFrame - 64) / 3;
-    return text.length() <= maxChars ? text : text.substring(0, maxChars);
   }
 
   /** Whether a finished frame is within the frame size that peers accept. */
   private boolean fits(byte[] frame) {
     return frame.length - 4 <= maxFrame;
-  }
-
-  /**
-   * Sends a reply to its caller: along the route, or straight back over the link the call came in
-   * on when the caller is that neighbour or the route is missing or broken. A call can overtake
-   * link states (a new neighbour's first calls, calls along a path that just formed or around one
-   * that just broke), and the neighbour it came from knows the way back: it just forwarded it.
-   */
-  private void sendReply(Link from, byte[] call, byte[] frame) {
-    UUID caller = Frames.source(call);
-    Link route = from != null && from.peerId.equals(caller) ? from : router.nextHop(caller);
-    if (!sent(route, frame) && (route == from || !sent(from, frame))) {
-      deliver(caller, frame, 0); // both failed just now: wait for routes to settle
-    }
-  }
-
-  /** Sends over {@code link} if it is there and open; false if not or if the write failed. */
-  private static boolean sent(Link link, byte[] frame) {
-    if (link == null || link.isClosed()) {
-      return false;
-    }
-    try {
-      link.send(frame);
-      return true;
-    } catch (IOException e) {
-      return false;
-    }
-  }
-
-  /**
-   * Sends a reply towards its caller. When the route is broken (a link just failed and routes are
-   * being recomputed), tries again a few times over about half a second: a caller must not wait for
-   * its deadline because a reply met a stale route.
-   */
-  private void deliver(UUID caller, byte[] frame, int attempt) {
-    if (sent(router.nextHop(caller), frame)) {
-      return;
-    }
-    if (attempt >= 6) {
-      LOG.log(Level.DEBUG, "reply to {0} dropped: no route", caller);
-      return;
-    }
-    try {
-      timer.schedule(() -> deliver(caller, frame, attempt + 1), 10L << attempt, TimeUnit.MILLISECONDS);
-    } catch (RejectedExecutionException closing) {
-      // The container is closing; its callers fail on their own.
-    }
   }
 
   /** Fails at once every call waiting on {@code container} (it left or became unreachable). */

@@ -95,7 +95,7 @@ class FrameExamplesTest {
   private static byte[] replyFrame() throws Exception {
     byte[] call = callFrame();
     byte[] payload = Arrays.copyOfRange(call, Wire.HEADER, call.length);
-    RemoteCalls arm = new RemoteCalls(ARM, codec(), null, null, null, 1 << 26);
+    Replies arm = new Replies(ARM, null, null, 1 << 26);
     ByteSink out = arm.replyStart(payload, Wire.OK);
     codec().write(Boolean.TRUE, out);
     return Frames.finish(out);

@@ -1,0 +1,107 @@
+package dev.trade.internal.net;
+
+import dev.trade.internal.codec.ByteSink;
+import java.io.IOException;
+import java.lang.System.Logger;
+import java.lang.System.Logger.Level;
+import java.util.UUID;
+import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * The way back of remote calls: builds the REPLY frames of calls served here and sends them, and
+ * the replies forwarded on behalf of other containers, towards their callers, also when a route
+ * is missing or has just broken.
+ *
+ * <p>Safe for concurrent use: it holds no state of its own beyond what it is made with; a reply
+ * that finds no route is tried again on the timer.
+ */
+final class Replies {
+  private static final Logger LOG = System.getLogger("dev.trade.net");
+
+  private final UUID self;
+  private final RemoteCalls.Router router;
+  private final ScheduledExecutorService timer;
+  private final int maxFrame;
+
+  /** @param maxFrame the largest frame (after its length field) that peers accept: MAXFRAMESIZE */
+  Replies(UUID self, RemoteCalls.Router router, ScheduledExecutorService timer, int maxFrame) {
+    this.self = self;
+    this.router = router;
+    this.timer = timer;
+    this.maxFrame = maxFrame;
+  }
+
+  /** A reply frame's start: routing back to the caller, the request id and a status. */
+  ByteSink replyStart(byte[] call, int status) {
+    ByteSink out = Frames.start(Wire.REPLY, 64);
+    Frames.writeRouting(out, self, Frames.source(call), Wire.MAX_HOPS);
+    out.writeBytes(call, Frames.ROUTING, 8);
+    out.writeByte(status);
+    return out;
+  }
+
+  /** A reply carrying only a text, shortened to what callers read (MAX_TEXT bytes of UTF-8). */
+  void reply(Link from, byte[] call, int status, String text) {
+    ByteSink out = replyStart(call, status);
+    out.writeText(clip(text == null ? "" : text));
+    sendReply(from, call, Frames.finish(out));
+  }
+
+  /**
+   * Cuts a reply text to what the caller reads ({@code MAX_TEXT} bytes) and a frame holds: a char
+   * takes at most 3 bytes of UTF-8.
+   */
+  private String clip(String text) {
+    int maxChars = Math.min(RemoteCalls.MAX_TEXT, maxFrame - 64) / 3;
+    return text.length() <= maxChars ? text : text.substring(0, maxChars);
+  }
+
+  /**
+   * Sends a reply to its caller: along the route, or straight back over the link the call came in
+   * on when the caller is that neighbour or the route is missing or broken. A call can overtake
+   * link states (a new neighbour's first calls, calls along a path that just formed or around one
+   * that just broke), and the neighbour it came from knows the way back: it just forwarded it.
+   */
+  void sendReply(Link from, byte[] call, byte[] frame) {
+    UUID caller = Frames.source(call);
+    Link route = from != null && from.peerId.equals(caller) ? from : router.nextHop(caller);
+    if (!sent(route, frame) && (route == from || !sent(from, frame))) {
+      deliver(caller, frame, 0); // both failed just now: wait for routes to settle
+    }
+  }
+
+  /** Sends over {@code link} if it is there and open; false if not or if the write failed. */
+  private static boolean sent(Link link, byte[] frame) {
+    if (link == null || link.isClosed()) {
+      return false;
+    }
+    try {
+      link.send(frame);
+      return true;
+    } catch (IOException e) {
+      return false;
+    }
+  }
+
+  /**
+   * Sends a reply towards its caller. When the route is broken (a link just failed and routes are
+   * being recomputed), tries again a few times over about half a second: a caller must not wait for
+   * its deadline because a reply met a stale route.
+   */
+  void deliver(UUID caller, byte[] frame, int attempt) {
+    if (sent(router.nextHop(caller), frame)) {
+      return;
+    }
+    if (attempt >= 6) {
+      LOG.log(Level.DEBUG, "reply to {0} dropped: no route", caller);
+      return;
+    }
+    try {
+      timer.schedule(() -> deliver(caller, frame, attempt + 1), 10L << attempt, TimeUnit.MILLISECONDS);
+    } catch (RejectedExecutionException closing) {
+      // The container is closing; its callers fail on their own.
+    }
+  }
+}
