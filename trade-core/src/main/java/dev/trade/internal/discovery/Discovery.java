@@ -93,31 +93,26 @@ public final class Discovery implements AutoCloseable {
     this.interfaces = Interfaces.choose(b.range, b.interfaces);
     ProtocolFamily family = b.group instanceof Inet4Address
         ? StandardProtocolFamily.INET : StandardProtocolFamily.INET6;
-    DatagramChannel receiveChannel = Sockets.receiver(family, target, interfaces);
     List<DatagramChannel> senders = new ArrayList<>();
     try {
       for (NetworkInterface nif : interfaces) {
         senders.add(Sockets.sender(family, nif, b.range));
       }
     } catch (IOException | RuntimeException e) {
-      Sockets.closeAll(receiveChannel, senders);
+      senders.forEach(Sockets::closeQuietly);
       throw e;
     }
     String tag = "[" + b.containerName + "]";
     this.announcer = new Announcer(b.systemId, b.containerId, b.containerName, key, target,
         b.addresses, interfaces, senders, b.broadcast, b.scheduler, "trade-discovery-send" + tag);
-    Receiver r;
+    this.receiver = new Receiver(senders, b.systemId, b.containerId, key, b.listener,
+        announcer::answer, b.observer, b.maxClockSkew, b.reportInterval, b.discovery);
     try {
-      r = new Receiver(receiveChannel, senders, b.systemId, b.containerId, key, b.listener,
-          announcer::answer, b.observer, b.maxClockSkew, b.reportInterval, b.discovery,
-          "trade-discovery-receive" + tag);
+      receiver.start(family, target, interfaces);
     } catch (IOException | RuntimeException e) {
-      announcer.close();
-      Sockets.closeQuietly(receiveChannel);
+      announcer.close(); // and the senders
       throw e;
     }
-    this.receiver = r;
-    receiver.start();
     announcer.start(b.interval);
     // Logged after starting: the first log line of a JVM sets up its logging (tens of ms), which the
     // announcer's own start-up (its MAC) can overlap on another core.

@@ -5,28 +5,28 @@ import java.io.IOException;
 import java.lang.System.Logger;
 import java.lang.System.Logger.Level;
 import java.net.InetSocketAddress;
-import java.nio.ByteBuffer;
-import java.nio.channels.ClosedChannelException;
-import java.nio.channels.ClosedSelectorException;
+import java.net.NetworkInterface;
+import java.net.ProtocolFamily;
 import java.nio.channels.DatagramChannel;
-import java.nio.channels.SelectionKey;
-import java.nio.channels.Selector;
 import java.time.Duration;
-import java.util.ArrayList;
-import java.util.Iterator;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.LongAdder;
+import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.Consumer;
 
 /**
- * The listening half of {@link Discovery}: one named daemon thread that reads the group's
- * datagrams, and the answers other containers send straight to this one's sending sockets, checks
- * them alike and passes announcements to the listener.
+ * The listening half of {@link Discovery}: checks the group's datagrams, and the answers other
+ * containers send straight to this one's sending sockets, and passes announcements to the
+ * listener. The datagrams are read by a {@link GroupSocket}, whose one thread serves every
+ * receiver of this JVM on the same group; a packet is checked (HMAC, format) once for all the
+ * receivers of one system there, and each receiver then applies its own checks (its own
+ * announcements, replays).
  *
- * <p>Shaped like JGroups' MPING. {@link #close()} wakes the thread from its selector, and it ends;
- * a bad packet is counted and skipped, never fatal. Thread-safe; the replay table and the log
- * limiter are confined to the receive thread.
+ * <p>Shaped like JGroups' MPING. A bad packet is counted and skipped, never fatal. Thread-safe;
+ * the replay table and the log limiter are confined to the delivering thread (one at a time).
  */
 final class Receiver {
   /** Sees what the receive thread does with each datagram; for tests. Called on that thread. */
@@ -39,53 +39,69 @@ final class Receiver {
     default void ignored() {}
   }
 
+  /**
+   * One datagram's check, done once for every receiver with the same system id and key. Confined
+   * to the delivering thread.
+   */
+  static final class Decoded {
+    private String systemId;
+    private byte[] key;
+    private Announcement result;
+    private BadPacketException failure;
+
+    Announcement decode(byte[] packet, int len, String systemId, byte[] key, Signer signer)
+        throws BadPacketException {
+      if (this.key == null || !this.systemId.equals(systemId) || !Arrays.equals(this.key, key)) {
+        this.systemId = systemId;
+        this.key = key;
+        this.result = null;
+        this.failure = null;
+        try {
+          result = Packets.decode(packet, len, systemId, signer);
+        } catch (BadPacketException e) {
+          failure = e;
+        }
+      }
+      if (failure != null) {
+        throw failure;
+      }
+      return result;
+    }
+  }
+
   private static final Logger LOG = System.getLogger(Discovery.class.getName());
   private static final long CLOSE_WAIT_MILLIS = 2000;
-  private static final int MAX_CONSECUTIVE_FAILURES = 10;
 
-  private final List<DatagramChannel> channels;
-  private final Selector selector;
+  private final List<DatagramChannel> answers;
   private final String systemId;
   private final String containerId;
-  private final Signer signer; // receive thread only
+  private final byte[] key;
+  private final Signer signer; // delivering thread only
   private final Discovery.Listener listener;
   private final Consumer<InetSocketAddress> newSender;
   private final Observer observer;
   private final ReplayGuard replay;
   private final Drops drops;
-  private final Thread thread;
   private final LongAdder ignored = new LongAdder();
+  /** Held while a datagram is delivered: close waits for a delivery in progress. */
+  private final ReentrantLock delivering = new ReentrantLock();
   private volatile boolean on;
   private volatile boolean closed;
+  private GroupSocket socket; // guarded by this
 
   /**
-   * @param group the channel joined to the group; closed by {@link #close()}
    * @param answers the sending channels, where answers to this container's announcements arrive;
-   *     read here, closed by their owner
+   *     read while this receiver listens, closed by their owner
    * @param newSender told (on the receive thread) the source of an accepted announcement from a
    *     container not heard before; must be quick
-   * @throws IOException if the channels cannot be made non-blocking or registered with a selector
    */
-  Receiver(DatagramChannel group, List<DatagramChannel> answers, String systemId,
-      String containerId, byte[] key, Discovery.Listener listener,
-      Consumer<InetSocketAddress> newSender, Observer observer, Duration maxClockSkew,
-      Duration reportInterval, boolean on, String threadName) throws IOException {
-    List<DatagramChannel> all = new ArrayList<>();
-    all.add(group);
-    all.addAll(answers);
-    this.channels = List.copyOf(all);
-    this.selector = Selector.open();
-    try {
-      for (DatagramChannel ch : channels) {
-        ch.configureBlocking(false);
-        ch.register(selector, SelectionKey.OP_READ);
-      }
-    } catch (IOException | RuntimeException e) {
-      selector.close();
-      throw e;
-    }
+  Receiver(List<DatagramChannel> answers, String systemId, String containerId, byte[] key,
+      Discovery.Listener listener, Consumer<InetSocketAddress> newSender, Observer observer,
+      Duration maxClockSkew, Duration reportInterval, boolean on) {
+    this.answers = List.copyOf(answers);
     this.systemId = systemId;
     this.containerId = containerId;
+    this.key = key.clone();
     this.signer = new Signer(key);
     this.listener = listener;
     this.newSender = newSender;
@@ -93,12 +109,18 @@ final class Receiver {
     this.replay = new ReplayGuard(ReplayGuard.DEFAULT_MAX_SENDERS, maxClockSkew);
     this.drops = new Drops(LOG, systemId, reportInterval.toNanos());
     this.on = on;
-    this.thread = new Thread(this::run, threadName);
-    thread.setDaemon(true);
   }
 
-  void start() {
-    thread.start();
+  /**
+   * Starts listening to {@code target} on {@code interfaces}, sharing the socket with the other
+   * receivers of this JVM there.
+   *
+   * @throws IOException if the port cannot be bound or the group not joined (see
+   *     {@link Sockets#receiver}), or the answer channels cannot be read
+   */
+  synchronized void start(ProtocolFamily family, InetSocketAddress target,
+      List<NetworkInterface> interfaces) throws IOException {
+    socket = GroupSocket.join(family, target, interfaces, this, answers);
   }
 
   void setOn(boolean on) {
@@ -118,75 +140,65 @@ final class Receiver {
   }
 
   /**
-   * Closes the group's channel and waits up to 2 s for the thread to end, unless called from it.
+   * Stops listening. Once it has returned the listener is not called any more, unless this is called
+   * from the listener itself, or a delivery in progress takes longer than 2 s (which is logged).
    * Idempotent.
    */
   void close() {
     closed = true;
-    selector.wakeup();
-    Sockets.closeQuietly(channels.get(0));
-    if (Thread.currentThread() == thread || !thread.isAlive()) {
+    synchronized (this) {
+      if (socket != null) {
+        socket.leave(this);
+        socket = null;
+      }
+    }
+    if (delivering.isHeldByCurrentThread()) {
       return;
     }
     try {
-      thread.join(CLOSE_WAIT_MILLIS);
+      if (delivering.tryLock(CLOSE_WAIT_MILLIS, TimeUnit.MILLISECONDS)) {
+        delivering.unlock();
+      } else {
+        LOG.log(Level.WARNING, "Discovery of {0} is still delivering an announcement after {1} ms:"
+            + " is the discovery listener blocked?", containerId, CLOSE_WAIT_MILLIS);
+      }
     } catch (InterruptedException e) {
       Thread.currentThread().interrupt();
     }
-    if (thread.isAlive()) {
-      LOG.log(Level.WARNING, "{0} did not end within {1} ms: is the discovery listener blocked?",
-          thread.getName(), CLOSE_WAIT_MILLIS);
-    }
   }
 
-  private void run() {
-    ByteBuffer buf = ByteBuffer.allocate(Packets.MAX_PACKET + 1); // +1: tells oversize apart
-    int failures = 0;
-    try (selector) {
-      while (!closed) {
-        try {
-          selector.select();
-          Iterator<SelectionKey> ready = selector.selectedKeys().iterator();
-          while (ready.hasNext() && !closed) {
-            DatagramChannel ch = (DatagramChannel) ready.next().channel();
-            ready.remove();
-            InetSocketAddress from;
-            while (!closed && (from = (InetSocketAddress) ch.receive(buf.clear())) != null) {
-              received(buf, from);
-            }
-          }
-          failures = 0;
-        } catch (ClosedChannelException | ClosedSelectorException e) {
-          break;
-        } catch (IOException | RuntimeException e) {
-          // Datagram receive errors are transient; stop only if they persist, rather than spin.
-          if (++failures >= MAX_CONSECUTIVE_FAILURES) {
-            LOG.log(Level.ERROR, "Discovery stops listening after " + failures + " failures", e);
-            break;
-          }
-          LOG.log(Level.WARNING, "Discovery could not receive; retrying", e);
-        }
+  /**
+   * One datagram from the group ({@code decoded} shared with the other receivers it goes to) or
+   * from this receiver's answer channels ({@code decoded} null). Called by the group's thread.
+   */
+  void received(byte[] packet, int len, InetSocketAddress from, Decoded decoded) {
+    delivering.lock();
+    try {
+      if (closed) {
+        return;
       }
-    } catch (IOException e) {
-      // Closing the selector at the end: nothing is left to release.
+      if (!on) {
+        ignored.increment();
+        observer.ignored();
+        return;
+      }
+      handle(packet, len, from, decoded);
+    } finally {
+      delivering.unlock();
     }
   }
 
-  private void received(ByteBuffer buf, InetSocketAddress from) {
-    if (!on) {
-      ignored.increment();
-      observer.ignored();
-      return;
-    }
-    handle(buf.array(), buf.position(), from);
-  }
-
-  /** Checks one datagram, then passes it on or drops it. Receive thread only (or tests). */
+  /** Checks one datagram, then passes it on or drops it. Delivering thread only (or tests). */
   void handle(byte[] packet, int len, InetSocketAddress from) {
+    handle(packet, len, from, null);
+  }
+
+  private void handle(byte[] packet, int len, InetSocketAddress from, Decoded decoded) {
     Announcement a;
     boolean isNew;
     try {
-      a = Packets.decode(packet, len, systemId, signer);
+      a = decoded == null ? Packets.decode(packet, len, systemId, signer)
+          : decoded.decode(packet, len, systemId, key, signer);
       if (a.containerId().equals(containerId)) {
         throw new BadPacketException(Reason.OWN, "our own announcement");
       }

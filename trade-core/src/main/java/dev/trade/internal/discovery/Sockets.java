@@ -94,11 +94,6 @@ final class Sockets {
     }
   }
 
-  static void closeAll(DatagramChannel receiver, List<DatagramChannel> senders) {
-    closeQuietly(receiver);
-    senders.forEach(Sockets::closeQuietly);
-  }
-
   static void closeQuietly(DatagramChannel ch) {
     try {
       ch.close();

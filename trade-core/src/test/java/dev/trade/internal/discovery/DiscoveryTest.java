@@ -285,12 +285,48 @@ class DiscoveryTest {
     a.setBroadcast(false);
     a.setBroadcast(true);
     assertEquals(sent, a.sentCount());
-    assertFalse(Thread.getAllStackTraces().keySet().stream()
-        .anyMatch(t -> t.getName().equals("trade-discovery-receive[name-a]")));
+    Await.until(Duration.ofSeconds(5), () -> receiveThreads() == 0,
+        "the receiving thread to end with the last discovery on its group");
     // The port is free for the next container.
     Recorder rb = new Recorder();
     start("alpha", "s3cret", "b", 7002, rb, b -> b.interval(FAST));
     rb.awaitDrops(Reason.OWN, 1);
+  }
+
+  @Test
+  void discoveriesOfOneJvmOnOneGroupShareOneReceivingThread() throws IOException {
+    Recorder ra = new Recorder();
+    Recorder rb = new Recorder();
+    Recorder rc = new Recorder();
+    Discovery a = start("alpha", "s3cret", "a", 7001, ra, b -> b.interval(FAST));
+    Discovery b = start("alpha", "s3cret", "b", 7002, rb, x -> x.interval(FAST));
+    // Another system on the same group and port: the packets are checked once per system.
+    Discovery c = start("beta", "other", "c", 7003, rc, x -> x.interval(FAST));
+    assertEquals(1, receiveThreads());
+    ra.awaitHeard("b", 2);
+    rb.awaitHeard("a", 2);
+    rc.awaitDrops(Reason.OWN, 1);
+    rc.awaitDrops(Reason.FOREIGN_SYSTEM, 1);
+    assertEquals(0, rc.heard().size());
+    ra.awaitDrops(Reason.FOREIGN_SYSTEM, 1);
+    b.close();
+    c.close();
+    assertEquals(1, receiveThreads(), "a still listens");
+    Recorder rd = new Recorder();
+    start("alpha", "s3cret", "d", 7004, rd, x -> x.interval(FAST));
+    ra.awaitHeard("d", 1);
+    rd.awaitHeard("a", 1);
+    int heardFromB = rb.heard().size();
+    a.close();
+    assertEquals(heardFromB, rb.heard().size(), "b heard something after it closed");
+  }
+
+  /** The threads receiving this test's group and port. */
+  private long receiveThreads() {
+    String suffix = ":" + port + "]";
+    return Thread.getAllStackTraces().keySet().stream()
+        .filter(t -> t.getName().startsWith("trade-discovery-receive[") && t.getName().endsWith(suffix))
+        .count();
   }
 
   @Test

@@ -9,7 +9,6 @@ import dev.trade.internal.discovery.BadPacketException.Reason;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
-import java.nio.channels.DatagramChannel;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
@@ -77,8 +76,7 @@ class ReceiverTest {
   }
 
   private Receiver receiver(Discovery.Listener listener) throws IOException {
-    return new Receiver(DatagramChannel.open(), List.of(), SYSTEM, "me", KEY, listener,
-        from -> newcomers.incrementAndGet(), recorder, Duration.ofSeconds(30), Duration.ofSeconds(60), true,
-        "test-receiver");
+    return new Receiver(List.of(), SYSTEM, "me", KEY, listener,
+        from -> newcomers.incrementAndGet(), recorder, Duration.ofSeconds(30), Duration.ofSeconds(60), true);
   }
 }
