@@ -40,7 +40,7 @@ final class Dispatch implements Link.Handler {
       case Wire.LINKS:
       case Wire.TABLE:
       case Wire.DELTA:
-        if (!replication.isStale(type, payload)) {
+        if (!replication.isStale(link, type, payload)) {
           network.onControl(() -> replication.received(link, type, payload));
         }
         break;

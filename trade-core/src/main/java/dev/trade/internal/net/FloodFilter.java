@@ -4,6 +4,7 @@ import dev.trade.TRADESerializationException;
 import dev.trade.internal.codec.ByteSource;
 import dev.trade.internal.registry.Registry;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 
 /**
@@ -24,6 +25,19 @@ final class FloodFilter {
   private final Map<String, Long> queuedLinks = new ConcurrentHashMap<>();
   /** The newest TABLE version of each owner that a reader has queued. */
   private final Map<String, Long> queuedTables = new ConcurrentHashMap<>();
+  /** For each owner, the newest link-state version heard and the links it came over. */
+  private final Map<String, Holders> holders = new ConcurrentHashMap<>();
+
+  /** Links that sent one version of a link state: they need no copy of it from here. */
+  private static final class Holders {
+    final long version;
+    final Set<Object> links = ConcurrentHashMap.newKeySet();
+
+    Holders(long version, Object first) {
+      this.version = version;
+      links.add(first);
+    }
+  }
 
   FloodFilter(Topology topology, Registry registry, Tables tables) {
     this.topology = topology;
@@ -32,18 +46,20 @@ final class FloodFilter {
   }
 
   /**
-   * Whether a LINKS, TABLE or DELTA payload is a copy of a version applied here already, or queued
+   * Whether a LINKS, TABLE or DELTA payload that came over link {@code from} (compared by
+   * identity) is a copy of a version applied here already, or queued
    * already from another link (a DELTA: a TABLE at that version or later is queued). A TABLE that
    * passes is kept on the control thread, listed or waiting for a route ({@link Tables}), so a
    * copy of it is never needed again; a DELTA that passes is not counted, since one that does not
    * follow makes the control thread ask for the whole TABLE at that version.
    */
-  boolean isStale(int type, byte[] payload) {
+  boolean isStale(Object from, int type, byte[] payload) {
     try {
       ByteSource in = ByteSource.of(payload);
       String owner = in.readText(MAX_TEXT);
       long version = in.readLong();
       if (type == Wire.LINKS) {
+        heard(owner, version, from);
         // While the control thread runs behind, every copy of a new version passes the check.
         return topology.isStale(owner, version) || queued(queuedLinks, owner, version);
       }
@@ -58,6 +74,33 @@ final class FloodFilter {
     } catch (TRADESerializationException | RuntimeException e) {
       return false; // malformed: the control thread closes the link
     }
+  }
+
+  private void heard(String owner, long version, Object from) {
+    holders.compute(owner, (o, h) -> {
+      if (h == null || h.version < version) {
+        return new Holders(version, from);
+      }
+      if (h.version == version) {
+        h.links.add(from);
+      }
+      return h;
+    });
+  }
+
+  /**
+   * Whether {@code link} needs no copy of {@code owner}'s link state at {@code version} from here:
+   * it sent that version here itself, or a newer one is queued here (which is passed on instead).
+   * With the control thread behind its links' readers, most neighbours have sent a version by the
+   * time it is applied: each version reached a container of 100 about 11 times, once per link.
+   */
+  boolean hasCopy(Object link, String owner, long version) {
+    Long queued = queuedLinks.get(owner);
+    if (queued != null && queued > version) {
+      return true;
+    }
+    Holders h = holders.get(owner);
+    return h != null && h.version == version && h.links.contains(link);
   }
 
   /** Records {@code version} as queued for {@code owner}; whether one as new was queued before. */
@@ -77,6 +120,7 @@ final class FloodFilter {
    */
   void pruned() {
     queuedLinks.keySet().removeIf(owner -> !topology.isStale(owner, Long.MIN_VALUE));
+    holders.keySet().removeIf(owner -> !topology.isStale(owner, Long.MIN_VALUE));
     queuedTables.keySet().removeIf(owner -> !tables.isStale(owner, Long.MIN_VALUE));
   }
 }

@@ -88,8 +88,8 @@ final class Replication {
   }
 
   /** See {@link FloodFilter#isStale}. Any thread. */
-  boolean isStale(int type, byte[] payload) {
-    return filter.isStale(type, payload);
+  boolean isStale(Link from, int type, byte[] payload) {
+    return filter.isStale(from, type, payload);
   }
 
   /** The neighbour on the shortest path to {@code container}, or null. Any thread. */
@@ -219,12 +219,13 @@ final class Replication {
             // The owner sent this state itself to every neighbour it lists (it floods each new
             // version over exactly those links, and gives all states to a link that comes up
             // later): passing it to them again only multiplies frames. In a full mesh that was
-            // n - 2 copies per receiver, n^2 frames per link change.
+            // n - 2 copies per receiver, n^2 frames per link change. Nor is it passed to those
+            // that sent this version here too, or when a newer one waits (FloodFilter.hasCopy).
             byte[] frame = StateFrames.wrap(Wire.LINKS, payload);
             for (Link l : links.values()) {
               String peer = l.peerKey;
               if (l != from && !peer.equals(owner) && !neighbours.contains(peer)
-                  && !unanswered.contains(l)) {
+                  && !unanswered.contains(l) && !filter.hasCopy(l, owner, version)) {
                 send(l, frame);
               }
             }

@@ -21,6 +21,10 @@ class FloodFilterTest {
   private final Tables tables = new Tables(registry, TimeUnit.SECONDS.toNanos(60));
   private final FloodFilter filter = new FloodFilter(topology, registry, tables);
   private final Codec codec = new Codec(AllowList.withDefaults(), Limits.DEFAULT, InfoBinding.NONE);
+  /** Stand-ins for links: the filter compares them by identity. */
+  private static final Object A = new Object();
+  private static final Object B = new Object();
+  private static final Object C = new Object();
 
   private static byte[] payload(byte[] frame) {
     return Arrays.copyOfRange(frame, Wire.HEADER, frame.length);
@@ -32,22 +36,36 @@ class FloodFilterTest {
 
   @Test
   void aLinkStateIsQueuedOnceWhateverTheLinksItComesOver() {
-    assertFalse(filter.isStale(Wire.LINKS, links("b", 1)));
-    assertTrue(filter.isStale(Wire.LINKS, links("b", 1)), "queued already, not applied yet");
-    assertFalse(filter.isStale(Wire.LINKS, links("b", 2)), "newer");
-    assertTrue(filter.isStale(Wire.LINKS, links("b", 1)), "older than one queued");
-    assertTrue(filter.isStale(Wire.LINKS, links("me", 9)), "our own");
+    assertFalse(filter.isStale(A, Wire.LINKS, links("b", 1)));
+    assertTrue(filter.isStale(A, Wire.LINKS, links("b", 1)), "queued already, not applied yet");
+    assertFalse(filter.isStale(A, Wire.LINKS, links("b", 2)), "newer");
+    assertTrue(filter.isStale(A, Wire.LINKS, links("b", 1)), "older than one queued");
+    assertTrue(filter.isStale(A, Wire.LINKS, links("me", 9)), "our own");
+  }
+
+  @Test
+  void linksThatSentAVersionNeedNoCopyOfIt() {
+    assertFalse(filter.isStale(A, Wire.LINKS, links("b", 1)));
+    assertTrue(filter.isStale(B, Wire.LINKS, links("b", 1)));
+    assertTrue(filter.hasCopy(A, "b", 1));
+    assertTrue(filter.hasCopy(B, "b", 1));
+    assertFalse(filter.hasCopy(C, "b", 1), "C never sent it");
+    assertFalse(filter.hasCopy(A, "x", 1), "another owner");
+    assertFalse(filter.isStale(C, Wire.LINKS, links("b", 2)));
+    assertTrue(filter.hasCopy(C, "b", 1), "a newer version is queued: that one goes out instead");
+    assertFalse(filter.hasCopy(A, "b", 2), "A sent only the older one");
+    assertTrue(filter.hasCopy(C, "b", 2));
   }
 
   @Test
   void aPrunedLinkStateMayComeAgain() {
-    assertFalse(filter.isStale(Wire.LINKS, links("b", 1)));
+    assertFalse(filter.isStale(A, Wire.LINKS, links("b", 1)));
     topology.apply(new Topology.LinkState("b", 1, Set.of("a")));
-    assertTrue(filter.isStale(Wire.LINKS, links("b", 1)));
+    assertTrue(filter.isStale(A, Wire.LINKS, links("b", 1)));
     topology.pruneUnreachable(0, 1);
     topology.pruneUnreachable(10, 1); // unreachable for longer than the grace: forgotten
     filter.pruned();
-    assertFalse(filter.isStale(Wire.LINKS, links("b", 1)));
+    assertFalse(filter.isStale(A, Wire.LINKS, links("b", 1)));
   }
 
   private byte[] table(String owner, long version) {
@@ -60,29 +78,29 @@ class FloodFilterTest {
 
   @Test
   void aTableIsQueuedOnceWhateverTheLinksItComesOver() {
-    assertFalse(filter.isStale(Wire.TABLE, table("x", 1)));
-    assertTrue(filter.isStale(Wire.TABLE, table("x", 1)), "queued already, not applied yet");
-    assertTrue(filter.isStale(Wire.DELTA, delta("x", 1)), "a table at its version is queued");
-    assertFalse(filter.isStale(Wire.TABLE, table("x", 2)), "newer");
+    assertFalse(filter.isStale(A, Wire.TABLE, table("x", 1)));
+    assertTrue(filter.isStale(A, Wire.TABLE, table("x", 1)), "queued already, not applied yet");
+    assertTrue(filter.isStale(A, Wire.DELTA, delta("x", 1)), "a table at its version is queued");
+    assertFalse(filter.isStale(A, Wire.TABLE, table("x", 2)), "newer");
     registry.applyTable(new Registry.Table("y", 3, List.of()), 1);
-    assertTrue(filter.isStale(Wire.TABLE, table("y", 3)), "applied already");
-    assertFalse(filter.isStale(Wire.LINKS, new byte[] {1}), "malformed: left to the control thread");
+    assertTrue(filter.isStale(A, Wire.TABLE, table("y", 3)), "applied already");
+    assertFalse(filter.isStale(A, Wire.LINKS, new byte[] {1}), "malformed: left to the control thread");
   }
 
   @Test
   void aDeltaThatPassesLetsTheTableAtItsVersionPass() {
-    assertFalse(filter.isStale(Wire.DELTA, delta("x", 5)));
+    assertFalse(filter.isStale(A, Wire.DELTA, delta("x", 5)));
     // Not following what is known here, the control thread asks for the table at that version.
-    assertFalse(filter.isStale(Wire.TABLE, table("x", 5)), "the table asked for was dropped");
+    assertFalse(filter.isStale(A, Wire.TABLE, table("x", 5)), "the table asked for was dropped");
   }
 
   @Test
   void aTableForgottenHereMayComeAgain() {
-    assertFalse(filter.isStale(Wire.TABLE, table("x", 1)));
+    assertFalse(filter.isStale(A, Wire.TABLE, table("x", 1)));
     filter.pruned(); // neither listed nor waiting: forgotten
-    assertFalse(filter.isStale(Wire.TABLE, table("x", 1)));
+    assertFalse(filter.isStale(A, Wire.TABLE, table("x", 1)));
     tables.table(new Registry.Table("x", 1, List.of()), null, 0); // waits for a route
     filter.pruned();
-    assertTrue(filter.isStale(Wire.TABLE, table("x", 1)), "waiting for a route: kept");
+    assertTrue(filter.isStale(A, Wire.TABLE, table("x", 1)), "waiting for a route: kept");
   }
 }

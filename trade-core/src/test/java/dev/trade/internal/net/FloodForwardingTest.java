@@ -1,0 +1,97 @@
+package dev.trade.internal.net;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trade.internal.codec.AllowList;
+import dev.trade.internal.codec.Codec;
+import dev.trade.internal.codec.InfoBinding;
+import dev.trade.internal.codec.Limits;
+import dev.trade.internal.registry.Registry;
+import java.io.DataInputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.UUID;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Which neighbours a container passes a link state on to: not the one it came from, not the
+ * owner's neighbours (the owner sent it to them), and not those that sent the same version here
+ * too, as most do while the control thread runs behind the links' readers.
+ */
+class FloodForwardingTest {
+  private final UUID self = UUID.randomUUID();
+  private final Codec codec = new Codec(AllowList.withDefaults(), Limits.DEFAULT, InfoBinding.NONE);
+  private final ScheduledExecutorService timer = Executors.newSingleThreadScheduledExecutor();
+  private final Map<UUID, Link> links = new ConcurrentHashMap<>();
+  private final List<Socket> sockets = new ArrayList<>();
+  private final Replication replication = new Replication(self, new Registry(self.toString(), "x", "host"),
+      codec, links, new RemoteCalls(self, codec, container -> null, null, timer, 1 << 20),
+      60_000_000_000L, (task, delay) -> { }, container -> { });
+
+  @AfterEach
+  void close() throws IOException {
+    links.values().forEach(l -> l.close("done"));
+    for (Socket s : sockets) {
+      s.close();
+    }
+    timer.shutdownNow();
+  }
+
+  /** A link to a neighbour named {@code name}; returns what the neighbour reads. */
+  private InputStream link(String name, Link[] made) throws IOException {
+    try (ServerSocket server = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
+      Socket near = new Socket();
+      near.connect(new InetSocketAddress(InetAddress.getLoopbackAddress(), server.getLocalPort()));
+      Socket far = server.accept();
+      sockets.add(near);
+      sockets.add(far);
+      Handshake.Peer peer = new Handshake.Peer(UUID.randomUUID(), name, "host", List.of(), null);
+      Link link = new Link(near, peer, true, 1 << 20);
+      links.put(peer.containerId(), link);
+      made[0] = link;
+      return far.getInputStream();
+    }
+  }
+
+  @Test
+  void aLinkStateGoesOnlyToNeighboursThatHaveNotSentIt() throws Exception {
+    Link[] a = new Link[1];
+    Link[] b = new Link[1];
+    Link[] c = new Link[1];
+    InputStream atA = link("a", a);
+    InputStream atB = link("b", b);
+    InputStream atC = link("c", c);
+    byte[] frame = StateFrames.links(new Topology.LinkState(UUID.randomUUID().toString(), 1,
+        Set.of(UUID.randomUUID().toString())));
+    byte[] state = Arrays.copyOfRange(frame, Wire.HEADER, frame.length);
+    // The readers of a and b: a's copy queues for the control thread, b's is dropped as a copy.
+    assertFalse(replication.isStale(a[0], Wire.LINKS, state));
+    assertTrue(replication.isStale(b[0], Wire.LINKS, state));
+    // The control thread applies a's copy and passes it on; on loopback, what is written is at
+    // the far end when the write returns.
+    replication.received(a[0], Wire.LINKS, state);
+    replication.flushQueued();
+    DataInputStream fromC = new DataInputStream(atC);
+    assertEquals(frame.length - 4, fromC.readInt(), "c had no copy and gets one");
+    byte[] got = new byte[frame.length - 4];
+    fromC.readFully(got);
+    assertEquals(Wire.LINKS, got[1]);
+    assertEquals(0, atB.available(), "b sent this version itself");
+    assertEquals(0, atA.available(), "it came from a");
+  }
+}
