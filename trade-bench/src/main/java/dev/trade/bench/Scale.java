@@ -16,7 +16,7 @@ import java.util.concurrent.ThreadLocalRandom;
  * in 16 MB, next to the average heap per container of the big JVMs.
  */
 final class Scale {
-  private static final int PER_JVM = 25;
+  static final int PER_JVM = 25;
   private final Path logs;
   private final boolean quick;
 

@@ -3,11 +3,13 @@ package dev.trade.bench;
 import dev.trade.TRADEContainer;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
+import dev.trade.TRADEServiceInfo;
 import java.io.BufferedReader;
 import java.io.InputStreamReader;
 import java.lang.management.ManagementFactory;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
+import java.util.Collection;
 import java.util.List;
 
 /**
@@ -34,6 +36,19 @@ public final class ScaleNode {
   }
 
   private ScaleNode() {}
+
+  /** The names {@code Scale} gives the containers of a system of {@code total}. */
+  private static List<String> expectedNames(int total) {
+    List<String> names = new ArrayList<>(List.of("c0-0"));
+    int left = total - 1;
+    for (int k = 1; left > 0; k++) {
+      for (int i = 0; i < Math.min(Scale.PER_JVM, left); i++) {
+        names.add("c" + k + "-" + i);
+      }
+      left -= Scale.PER_JVM;
+    }
+    return names;
+  }
 
   public static void main(String[] args) throws Exception {
     String sysId = args[0];
@@ -107,6 +122,18 @@ public final class ScaleNode {
         }
         System.err.printf("PROGRESS %d ms after GO: %d..%d of %d services%n",
             (report - go) / 1_000_000, least, most, total);
+        if (least >= total - 3) {
+          // The last few: who lacks whose service, to tell a slow link from a slow table.
+          for (TRADEContainer c : containers) {
+            Collection<TRADEServiceInfo> seen = c.getAvailableServices(probe);
+            if (seen.size() < total) {
+              List<String> missing = expectedNames(total);
+              seen.forEach(i -> missing.remove(i.getContainerName()));
+              System.err.printf("LACKING %s lacks %s; %d links%n", c.getName(), missing,
+                  c.getNeighbours().size());
+            }
+          }
+        }
       }
       Thread.sleep(10);
     }
