@@ -72,18 +72,21 @@ final class GroupSocket {
       GroupSocket g = OPEN.get(key);
       if (g == null) {
         DatagramChannel ch = Sockets.receiver(family, target, interfaces);
-        Selector selector;
+        Selector selector = null;
         try {
           ch.configureBlocking(false);
           selector = Selector.open();
           ch.register(selector, SelectionKey.OP_READ, null);
-        } catch (IOException | RuntimeException e) {
+          g = new GroupSocket(List.copyOf(key), ch, selector,
+              "trade-discovery-receive[" + Announcement.format(target) + "]");
+          g.thread.start();
+        } catch (IOException | RuntimeException | Error e) {
           Sockets.closeQuietly(ch);
+          if (selector != null) {
+            selector.close();
+          }
           throw e;
         }
-        g = new GroupSocket(List.copyOf(key), ch, selector,
-            "trade-discovery-receive[" + Announcement.format(target) + "]");
-        g.thread.start();
         OPEN.put(g.key, g);
       }
       List<SelectionKey> keys = new ArrayList<>();
@@ -116,6 +119,7 @@ final class GroupSocket {
       if (keys != null) {
         keys.forEach(SelectionKey::cancel);
       }
+      selector.wakeup(); // a cancelled key lets go of its channel at the next select
       closeIfUnused();
     }
   }
@@ -124,7 +128,7 @@ final class GroupSocket {
   private void closeIfUnused() {
     if (receivers.isEmpty() && !closed) {
       closed = true;
-      OPEN.remove(key);
+      OPEN.remove(key, this);
       selector.wakeup();
       Sockets.closeQuietly(group);
     }
@@ -170,6 +174,13 @@ final class GroupSocket {
       }
     } catch (IOException e) {
       // Closing the selector at the end: nothing is left to release.
+    } finally {
+      // Ended by failures, not by the last receiver leaving: the next join opens a new one.
+      synchronized (OPEN) {
+        OPEN.remove(key, this);
+        closed = true;
+      }
+      Sockets.closeQuietly(group);
     }
   }
 
