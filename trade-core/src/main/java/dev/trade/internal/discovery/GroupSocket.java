@@ -162,6 +162,9 @@ final class GroupSocket {
         } catch (ClosedSelectorException e) {
           break;
         } catch (ClosedChannelException e) {
+          if (!group.isOpen()) {
+            break; // closed by the last leave
+          }
           // An answer channel closed by its owner between select and receive: its key goes.
         } catch (IOException | RuntimeException e) {
           // Datagram receive errors are transient; stop only if they persist, rather than spin.
