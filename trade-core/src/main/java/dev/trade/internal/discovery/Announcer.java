@@ -8,6 +8,7 @@ import java.net.NetworkInterface;
 import java.nio.ByteBuffer;
 import java.nio.channels.DatagramChannel;
 import java.time.Duration;
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -54,9 +55,8 @@ final class Announcer {
   private final Object lock = new Object();
   // Guarded by lock: the last state logged per interface, so that only changes are logged.
   private final Map<String, String> states = new HashMap<>();
-  // Guarded by lock: each interface as last looked up, and when (nanoTime); see current(int).
-  private final NetworkInterface[] current;
-  private final long[] lookedUp;
+  // Guarded by lock: what each interface announces, as last worked out; see plan(int).
+  private final Plan[] plans;
   private volatile boolean on; // Written under lock.
   private boolean closed; // Guarded by lock.
 
@@ -77,8 +77,7 @@ final class Announcer {
     this.addresses = addresses;
     this.interfaces = List.copyOf(interfaces);
     this.channels = List.copyOf(channels);
-    this.current = this.interfaces.toArray(new NetworkInterface[0]);
-    this.lookedUp = new long[current.length];
+    this.plans = new Plan[this.interfaces.size()];
     this.on = on;
     this.ownScheduler = scheduler == null;
     this.scheduler = scheduler != null ? scheduler : Executors.newSingleThreadScheduledExecutor(r -> {
@@ -113,7 +112,11 @@ final class Announcer {
     return on;
   }
 
+  /** Announces now, with the listen addresses as they are now. */
   void announceNow() {
+    synchronized (lock) {
+      Arrays.fill(plans, null);
+    }
     try {
       scheduler.execute(this::announceToGroup);
     } catch (RejectedExecutionException e) {
@@ -192,15 +195,13 @@ final class Announcer {
       if (!on || closed) {
         return;
       }
-      List<InetSocketAddress> listen;
-      try {
-        listen = List.copyOf(addresses.get());
-      } catch (RuntimeException e) {
-        LOG.log(Level.WARNING, "Discovery could not get the listen addresses to announce", e);
+      Plan plan = plan(i);
+      if (plan == null) {
         return;
       }
-      NetworkInterface nif = current(i);
-      List<InetSocketAddress> mine = Interfaces.announceable(nif, listen);
+      NetworkInterface nif = plan.nif();
+      List<InetSocketAddress> listen = plan.listen();
+      List<InetSocketAddress> mine = plan.mine();
       if (mine.isEmpty()) {
         note(nif, Level.INFO, "nothing to announce: " + (listen.isEmpty()
             ? "no listen addresses" : "none of the listen addresses " + Announcement.format(listen) + " is on it"));
@@ -222,18 +223,35 @@ final class Announcer {
     }
   }
 
+  /** What the {@code i}th interface announces: the interface, the listen addresses, those on it. */
+  private record Plan(NetworkInterface nif, List<InetSocketAddress> listen,
+      List<InetSocketAddress> mine, long at) {}
+
   /**
-   * The {@code i}th interface as it is now, looked up again at most once a second: a lookup takes
-   * system calls, and while a large system starts a container answers a newcomer every few
-   * milliseconds. A changed address (DHCP) is still announced within a second. Caller holds lock.
+   * What the {@code i}th interface announces, worked out again at most once a second and after
+   * {@link #announceNow()}: listing the listen addresses (wildcards expanded) and looking the
+   * interface up take system calls, and while a large system starts a container answers a
+   * newcomer every few milliseconds. A changed address (DHCP) is still announced within a second.
+   * Caller holds lock.
+   *
+   * @return null if the listen addresses could not be had (logged)
    */
-  private NetworkInterface current(int i) {
+  private Plan plan(int i) {
     long now = System.nanoTime();
-    if (lookedUp[i] == 0 || now - lookedUp[i] >= 1_000_000_000L) {
-      current[i] = Interfaces.refresh(interfaces.get(i));
-      lookedUp[i] = now;
+    Plan plan = plans[i];
+    if (plan == null || now - plan.at() >= 1_000_000_000L) {
+      List<InetSocketAddress> listen;
+      try {
+        listen = List.copyOf(addresses.get());
+      } catch (RuntimeException e) {
+        LOG.log(Level.WARNING, "Discovery could not get the listen addresses to announce", e);
+        return null;
+      }
+      NetworkInterface nif = Interfaces.refresh(interfaces.get(i));
+      plan = new Plan(nif, listen, Interfaces.announceable(nif, listen), now);
+      plans[i] = plan;
     }
-    return current[i];
+    return plan;
   }
 
   // Caller holds lock.

@@ -286,9 +286,9 @@ public final class Discovery implements AutoCloseable {
     }
 
     /**
-     * Where this container accepts connections, asked before each announcement on the sending
-     * thread: it must be quick and must not block. Wildcard addresses stand for each interface's
-     * own; an empty list (the default) means nothing is announced.
+     * Where this container accepts connections, asked on the sending thread at most once a second
+     * and after {@link Discovery#announceNow()}: it must not block. Wildcard addresses stand for
+     * each interface's own; an empty list (the default) means nothing is announced.
      */
     public Builder addresses(Supplier<List<InetSocketAddress>> addresses) {
       this.addresses = Objects.requireNonNull(addresses, "addresses == null");

@@ -64,10 +64,6 @@ final class Finder implements AutoCloseable {
   private final ScheduledFuture<?> sweep;
   private final AtomicBoolean choosing = new AtomicBoolean();
   private volatile Set<UUID> wanted = Set.of();
-  // The announcing thread's cache of what to announce (see announced).
-  private List<InetSocketAddress> announcedFor;
-  private List<InetSocketAddress> announced;
-  private long announcedAt;
 
   Finder(Settings settings, UUID self, String name, Supplier<List<InetSocketAddress>> listening,
       Predicate<UUID> linked, Connector connector, ScheduledExecutorService timer, boolean broadcast,
@@ -86,7 +82,7 @@ final class Finder implements AutoCloseable {
             ? Discovery.Range.SUBNET : Discovery.Range.LOCALHOST)
         .interfaces(settings.discoveryInterfaces())
         .container(self.toString(), name)
-        .addresses(() -> announced(listening.get()))
+        .addresses(() -> concrete(listening.get()))
         .listener(this::heard)
         .broadcast(broadcast)
         .discovery(discover)
@@ -243,22 +239,6 @@ final class Finder implements AutoCloseable {
         consider(peer);
       }
     }
-  }
-
-  /**
-   * What to announce: the listen addresses with wildcards expanded, computed again at most once a
-   * second. Listing the interfaces takes system calls, and in a large system a container answers
-   * a newcomer every few milliseconds while they start; a changed address (DHCP) is still
-   * announced within a second. Announcing thread only.
-   */
-  private List<InetSocketAddress> announced(List<InetSocketAddress> listening) {
-    long now = System.nanoTime();
-    if (announcedFor == null || !announcedFor.equals(listening) || now - announcedAt >= 1_000_000_000L) {
-      announcedFor = listening;
-      announced = List.copyOf(concrete(listening));
-      announcedAt = now;
-    }
-    return announced;
   }
 
   private void later(Runnable task, long delayMs) {
