@@ -88,6 +88,7 @@ final class Heartbeat {
         if (idle == null) {
           idle = new ArrayList<>();
         }
+        l.pinging = true; // here, not on the worker: a ping still queued is not sent twice
         idle.add(l);
       }
     }
@@ -107,7 +108,6 @@ final class Heartbeat {
     try {
       workers.execute(() -> {
         for (Link l : idle) {
-          l.pinging = true;
           try {
             l.send(PING);
           } catch (IOException e) {

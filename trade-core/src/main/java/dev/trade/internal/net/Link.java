@@ -79,7 +79,10 @@ final class Link {
   private long watchSeen;
   volatile long lastReceived = System.nanoTime();
   volatile long lastSent = System.nanoTime();
-  /** A heartbeat PING to this link is being sent (it may block while the peer reads nothing). */
+  /**
+   * A heartbeat PING to this link is queued or being sent (a send may block while the peer reads
+   * nothing).
+   */
   volatile boolean pinging;
 
   Link(Socket socket, Handshake.Peer peer, boolean initiatedHere, int maxFrame) throws IOException {
