@@ -134,11 +134,6 @@ final class GroupSocket {
     }
   }
 
-  /** Whether the thread runs (for tests). */
-  boolean isReading() {
-    return thread.isAlive();
-  }
-
   private void run() {
     ByteBuffer buf = ByteBuffer.allocate(Packets.MAX_PACKET + 1); // +1: tells oversize apart
     int failures = 0;
