@@ -121,8 +121,10 @@ final class Graph {
   }
 
   /**
-   * Breadth-first from {@code from} over edges whose both ends list each other, neighbours in id
-   * order: for each node its distance ({@code -1}: unreachable) and the first hop on its path.
+   * Breadth-first from {@code from} over edges whose both ends list each other, and over every
+   * edge {@code from} lists (its own live links, whether or not the peer's state says so yet),
+   * neighbours in id order: for each node its distance ({@code -1}: unreachable) and the first hop
+   * on its path.
    *
    * @param excluded nodes entered only as direct neighbours of {@code from} (held down: a direct
    *     link proves a container alive)
@@ -142,8 +144,8 @@ final class Graph {
         continue;
       }
       for (int n : next) {
-        if (distance[n] < 0 && listedSet[n] != null && listedSet[n].get(at)
-            && (at == from || !excluded.test(n))) {
+        if (distance[n] < 0
+            && (at == from || listedSet[n] != null && listedSet[n].get(at) && !excluded.test(n))) {
           distance[n] = distance[at] + 1;
           firstHop[n] = at == from ? n : firstHop[at];
           queue[tail++] = n;

@@ -138,9 +138,11 @@ final class Routing {
       }, Math.max(0, end - System.nanoTime()));
     }
     // A container that became reachable but whose table we lack (it travelled another way, or was
-    // pruned while the path was down): ask the next hop for it.
+    // pruned while the path was down): ask the next hop for it. Not a new neighbour, reachable from
+    // its link's first moment on: its table comes in the link-up exchange.
     for (Map.Entry<UUID, UUID> h : hops.entrySet()) {
-      if (!before.containsKey(h.getKey()) && !known.contains(h.getKey().toString())) {
+      if (!before.containsKey(h.getKey()) && !known.contains(h.getKey().toString())
+          && !h.getValue().equals(h.getKey())) {
         askForTable.accept(h.getValue(), h.getKey().toString());
       }
     }

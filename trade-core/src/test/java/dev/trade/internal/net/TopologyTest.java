@@ -24,6 +24,18 @@ class TopologyTest {
     assertEquals(new Topology.Route("a", 1), t.route("a"));
   }
 
+  @Test
+  void ownLinksCarryRoutesBeforeThePeersStatesListThem() {
+    Topology t = new Topology("me", LONG);
+    t.setOwnNeighbours(Set.of("a"));
+    assertEquals(new Topology.Route("a", 1), t.route("a"), "a live link of this container's own");
+    t.apply(new Topology.LinkState("a", 1, Set.of("b"))); // not me: a's state left before our link
+    t.apply(new Topology.LinkState("b", 1, Set.of("a", "c")));
+    assertEquals(new Topology.Route("a", 2), t.route("b"));
+    t.apply(new Topology.LinkState("c", 1, Set.of()));
+    assertNull(t.route("c"), "c does not list b: only this container's own links count one-sided");
+  }
+
   /** Link readers drop the copies a flood brings by this check; a pruned state counts as unknown. */
   @Test
   void staleMeansAVersionAppliedAlreadyAndForgetsPrunedStates() {
