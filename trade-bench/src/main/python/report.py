@@ -93,8 +93,11 @@ def main():
     its = life.get("iterations", [])
     med = lambda key: statistics.median([i[key] for i in its]) if its else None
     mx = lambda key: max([i[key] for i in its]) if its else None
-    sizes = {s["containers"]: s for s in scale.get("sizes", [])}
-    s100 = sizes.get(100, {})
+    sizes = {}  # containers -> the runs of that size, in order
+    for s in scale.get("sizes", []):
+        sizes.setdefault(s["containers"], []).append(s)
+    converged_ms = lambda s: s["convergence_ms"] if s.get("converged") else float("inf")
+    s100 = sizes.get(100, [])
 
     goals = [
         ("small-call p50 ≤ 1.0× RMI", ratio(p("small", "trade"), p("small", "rmi")), lambda r: r <= 1.0, rfmt),
@@ -111,10 +114,12 @@ def main():
          statistics.median([i["start_to_callable_ms"] for i in life.get("iterations_appcds", [])])
          if life.get("iterations_appcds") else None, lambda v: v <= 300, lambda v: f"{v:.0f} ms"),
         ("kill -9 → left ≤ 1 s (worst)", mx("kill_to_left_ms"), lambda v: v <= 1000, lambda v: f"{v:.0f} ms"),
-        ("100 containers converge ≤ 10 s",
-         None if not s100 else (s100.get("convergence_ms") if s100.get("converged") else float("inf")),
+        (f"100 containers converge ≤ 10 s (median of {len(s100)} run{'s' if len(s100) != 1 else ''})",
+         statistics.median([converged_ms(s) for s in s100]) if s100 else None,
          lambda v: v <= 10_000, lambda v: "not within 60 s" if v == float("inf") else f"{v / 1000:.1f} s"),
-        ("≤ 16 MB heap per container (100 containers)", s100.get("heap_per_container_mb"), lambda v: v <= 16, lambda v: f"{v:.1f} MB"),
+        ("≤ 16 MB heap per container (100 containers, largest)",
+         max((s["heap_per_container_mb"] for s in s100 if s.get("heap_per_container_mb") is not None), default=None),
+         lambda v: v <= 16, lambda v: f"{v:.1f} MB"),
     ]
 
     L = []
@@ -220,17 +225,18 @@ def main():
           "moment until every container lists every container's service. *Heap per container*: "
           "heap in use after full GCs with the containers running, minus the same JVM's heap before "
           "building them, divided by their number.\n")
-        w("| containers | JVMs | all built after | converged after | heap per container | the -Xmx16m JVM: its container / whole heap | threads (all JVMs) |")
-        w("|---|---|---|---|---|---|---|")
-        for n in sorted(sizes):
-            s = sizes[n]
+        w("Each size runs several times, each time a new system of new JVMs; the goal is judged on the "
+          "median.\n")
+        w("| containers | run | JVMs | all built after | converged after | heap per container | the -Xmx16m JVM: its container / whole heap | threads (all JVMs) |")
+        w("|---|---|---|---|---|---|---|---|")
+        for n, run, s in ((n, k + 1, s) for n in sorted(sizes) for k, s in enumerate(sizes[n])):
             conv = f"{s['convergence_ms'] / 1000:.2f} s" if s.get("converged") else "**not within 60 s**"
             mb = lambda v: "–" if v is None else f"{v:.2f}"
             built = "–" if s.get("all_built_ms") is None else f"{s['all_built_ms'] / 1000:.2f} s"
-            w(f"| {n} | {s['jvms']} | {built} | {conv} | {mb(s['heap_per_container_mb'])} MB | "
+            w(f"| {n} | {run} | {s['jvms']} | {built} | {conv} | {mb(s['heap_per_container_mb'])} MB | "
               f"{mb(s['single_container_jvm_xmx16m_heap_mb'])} / {mb(s['single_container_jvm_total_heap_mb'])} MB | {s['threads_total']} |")
         w("")
-    failed = [s for s in sizes.values() if s.get("problems")]
+    failed = [s for runs in sizes.values() for s in runs if s.get("problems")]
     if failed:
         w("What the JVMs that did not converge reported (`TIMEOUT` lists how many services each of "
           "their containers saw):\n")

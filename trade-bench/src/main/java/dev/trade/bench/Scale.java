@@ -14,6 +14,10 @@ import java.util.concurrent.ThreadLocalRandom;
  * separate as in different JVMs: own sockets, threads and tables), plus one JVM that holds a single
  * container under {@code -Xmx16m}: direct proof that one container of an N-container system fits
  * in 16 MB, next to the average heap per container of the big JVMs.
+ *
+ * <p>Each size runs {@code -Dbench.scaleRuns} times (3, or 1 for a quick run), each a new system
+ * of new JVMs: one run's convergence time varies by a third from run to run on a loaded 2-core
+ * machine, so the report judges the median.
  */
 final class Scale {
   static final int PER_JVM = 25;
@@ -28,8 +32,11 @@ final class Scale {
   void run(Json json) throws Exception {
     json.key("sizes").beginArray();
     String sizes = System.getProperty("bench.scaleSizes", quick ? "10" : "10,50,100");
+    int runs = Integer.getInteger("bench.scaleRuns", quick ? 1 : 3);
     for (String n : sizes.split(",")) {
-      once(Integer.parseInt(n.trim()), json);
+      for (int run = 0; run < runs; run++) {
+        once(Integer.parseInt(n.trim()), json);
+      }
     }
     json.endArray();
   }
