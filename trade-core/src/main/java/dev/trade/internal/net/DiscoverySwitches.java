@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.UUID;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.function.BooleanSupplier;
+import java.util.function.IntSupplier;
 import java.util.function.Predicate;
 
 /**
@@ -26,6 +27,7 @@ final class DiscoverySwitches implements AutoCloseable {
   private final String name;
   private final Connector connector;
   private final Predicate<UUID> linked;
+  private final IntSupplier reachable;
   private final ScheduledExecutorService timer;
   private final BooleanSupplier closed;
   // Guarded by this.
@@ -33,15 +35,18 @@ final class DiscoverySwitches implements AutoCloseable {
 
   /**
    * @param linked whether this container has a link to a container
+   * @param reachable how many other containers routing reaches now
    * @param closed whether the container has closed (then no finder is made any more)
    */
   DiscoverySwitches(Settings settings, UUID self, String name, Connector connector,
-      Predicate<UUID> linked, ScheduledExecutorService timer, BooleanSupplier closed) {
+      Predicate<UUID> linked, IntSupplier reachable, ScheduledExecutorService timer,
+      BooleanSupplier closed) {
     this.settings = settings;
     this.self = self;
     this.name = name;
     this.connector = connector;
     this.linked = linked;
+    this.reachable = reachable;
     this.timer = timer;
     this.closed = closed;
   }
@@ -85,7 +90,7 @@ final class DiscoverySwitches implements AutoCloseable {
   /** The finder, made with these switches if there is none yet; null once the container closed. */
   synchronized Finder finder(boolean broadcast, boolean discover) throws IOException {
     if (finder == null && !closed.getAsBoolean()) {
-      finder = new Finder(settings, self, name, connector::listening, linked,
+      finder = new Finder(settings, self, name, connector::listening, linked, reachable,
           connector, timer, broadcast, discover);
     }
     return finder;

@@ -24,6 +24,7 @@ import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.function.IntSupplier;
 import java.util.function.Predicate;
 import java.util.function.Supplier;
 
@@ -45,6 +46,8 @@ final class Finder implements AutoCloseable {
   private static final long DIAL_GRACE_MS = 2_000;
   private static final long SWEEP_MS = 1_000;
   private static final long SETTLE_MS = 100;
+  /** The longest a newcomer waits to hear most of the system before it chooses (see holding). */
+  static final long HOLD_MAX_NANOS = TimeUnit.SECONDS.toNanos(3);
   /** How long a forgotten container's old announcements are ignored (the replay guard's window). */
   private static final long FORGET_NANOS = TimeUnit.SECONDS.toNanos(60);
 
@@ -53,6 +56,7 @@ final class Finder implements AutoCloseable {
 
   private final UUID self;
   private final Predicate<UUID> linked;
+  private final IntSupplier reachable;
   private final Connector connector;
   private final ScheduledExecutorService timer;
   private final Discovery discovery;
@@ -64,12 +68,15 @@ final class Finder implements AutoCloseable {
   private final ScheduledFuture<?> sweep;
   private final AtomicBoolean choosing = new AtomicBoolean();
   private volatile Set<UUID> wanted = Set.of();
+  /** When the first choice was made (nanoTime), 0 before it. Guarded by this. */
+  private long firstChoiceAt;
 
   Finder(Settings settings, UUID self, String name, Supplier<List<InetSocketAddress>> listening,
-      Predicate<UUID> linked, Connector connector, ScheduledExecutorService timer, boolean broadcast,
-      boolean discover) throws IOException {
+      Predicate<UUID> linked, IntSupplier reachable, Connector connector,
+      ScheduledExecutorService timer, boolean broadcast, boolean discover) throws IOException {
     this.self = self;
     this.linked = linked;
+    this.reachable = reachable;
     this.connector = connector;
     this.timer = timer;
     this.expiry = 3 * settings.broadcastInterval().toNanos() + TimeUnit.MILLISECONDS.toNanos(SWEEP_MS);
@@ -171,11 +178,47 @@ final class Finder implements AutoCloseable {
 
   private synchronized void choose() {
     choosing.set(false);
+    if (holding()) {
+      if (choosing.compareAndSet(false, true)) {
+        later(this::choose, SETTLE_MS); // look again then
+      }
+      return;
+    }
     Set<UUID> now = Set.copyOf(Overlay.chosen(self, known.keySet(), linkedNow()));
     wanted = now;
     for (UUID peer : now) {
       consider(peer);
     }
+  }
+
+  /**
+   * Whether a newcomer waits before choosing beyond its first contact: while a large system is
+   * busy, it hears the others' answers over seconds, and each choice made on part of them dials
+   * containers (ring successors above all) that a later choice with more of them does not choose,
+   * links that stay. Routing tells, once the first link's states are applied, how many containers
+   * there are: it waits until then and until it has heard nine in ten of them, or for
+   * {@link #HOLD_MAX_NANOS} after the first choice (containers beyond discovery's reach, on the far
+   * side of a bridging container, are never heard). Guarded by this.
+   */
+  private boolean holding() {
+    long now = System.nanoTime();
+    if (firstChoiceAt == 0) {
+      firstChoiceAt = now;
+      return false;
+    }
+    return holds(now - firstChoiceAt, known.size(), reachable.getAsInt());
+  }
+
+  /**
+   * The rule of {@link #holding}: whether to wait, {@code sinceFirst} nanoseconds after the first
+   * choice, having heard {@code heard} containers while routing reaches {@code reachable}.
+   */
+  static boolean holds(long sinceFirst, int heard, int reachable) {
+    if (sinceFirst >= HOLD_MAX_NANOS || heard <= 1) {
+      return false; // waited long enough, or nothing to choose between
+    }
+    // Routing behind discovery (the first link's states not applied yet), or most not heard yet.
+    return reachable < heard || heard * 10L < reachable * 9L;
   }
 
   private Set<UUID> linkedNow() {

@@ -115,7 +115,7 @@ public final class Network implements AutoCloseable {
           }
         });
     this.discovery = new DiscoverySwitches(settings, self, name, connector, links::containsKey,
-        timer, () -> closed);
+        replication::reachableCount, timer, () -> closed);
     registry.addListener(
         (added, removed) -> replication.localChanged(added, removed, this::onControl));
   }

@@ -104,6 +104,11 @@ final class Replication {
     return filter.isStale(from, type, payload);
   }
 
+  /** How many other containers there are routes to now. Any thread. */
+  int reachableCount() {
+    return routing.reachableCount();
+  }
+
   /** The neighbour on the shortest path to {@code container}, or null. Any thread. */
   UUID nextHop(UUID container) {
     return routing.nextHop(container);

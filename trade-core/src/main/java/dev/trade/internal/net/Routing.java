@@ -70,6 +70,11 @@ final class Routing {
     return nextHops.get(container);
   }
 
+  /** How many other containers there are routes to now. Any thread. */
+  int reachableCount() {
+    return nextHops.size();
+  }
+
   /** The route to {@code container} as computed last, or null. */
   Topology.Route route(String container) {
     return routed.get(container);
