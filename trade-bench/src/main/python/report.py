@@ -227,14 +227,15 @@ def main():
           "building them, divided by their number.\n")
         w("Each size runs several times, each time a new system of new JVMs; the goal is judged on the "
           "median.\n")
-        w("| containers | run | JVMs | all built after | converged after | heap per container | the -Xmx16m JVM: its container / whole heap | threads (all JVMs) |")
-        w("|---|---|---|---|---|---|---|---|")
+        w("| containers | run | JVMs | all built after | converged after | heap per container | the -Xmx16m JVM: its container / whole heap | threads (all JVMs) | links per container: mean / most |")
+        w("|---|---|---|---|---|---|---|---|---|")
         for n, run, s in ((n, k + 1, s) for n in sorted(sizes) for k, s in enumerate(sizes[n])):
             conv = f"{s['convergence_ms'] / 1000:.2f} s" if s.get("converged") else "**not within 60 s**"
             mb = lambda v: "–" if v is None else f"{v:.2f}"
             built = "–" if s.get("all_built_ms") is None else f"{s['all_built_ms'] / 1000:.2f} s"
             w(f"| {n} | {run} | {s['jvms']} | {built} | {conv} | {mb(s['heap_per_container_mb'])} MB | "
-              f"{mb(s['single_container_jvm_xmx16m_heap_mb'])} / {mb(s['single_container_jvm_total_heap_mb'])} MB | {s['threads_total']} |")
+              f"{mb(s['single_container_jvm_xmx16m_heap_mb'])} / {mb(s['single_container_jvm_total_heap_mb'])} MB | {s['threads_total']} | "
+              f"{s.get('links_per_container', '–')} / {s.get('most_links', '–')} |")
         w("")
     failed = [s for runs in sizes.values() for s in runs if s.get("problems")]
     if failed:

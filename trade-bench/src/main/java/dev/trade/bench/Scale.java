@@ -98,7 +98,8 @@ final class Scale {
         try {
           jvms.get(k).send("HEAP");
           String[] h = jvms.get(k).await("HEAP", 60_000).split(" ");
-          heaps.add(new long[] {Long.parseLong(h[0]), Long.parseLong(h[1]), Long.parseLong(h[2])});
+          heaps.add(new long[] {Long.parseLong(h[0]), Long.parseLong(h[1]), Long.parseLong(h[2]),
+              Long.parseLong(h[3]), Long.parseLong(h[4])});
         } catch (IOException e) {
           heaps.add(null);
           problems.append("JVM ").append(k).append(" (").append(counts.get(k))
@@ -109,10 +110,14 @@ final class Scale {
       long bigHeap = 0;
       int bigCount = 0;
       long threads = 0;
+      long links = 0;
+      long mostLinks = 0;
       for (int k = 0; k < jvms.size(); k++) {
         long[] h = heaps.get(k);
         if (h != null) {
           threads += h[2];
+          links += h[3];
+          mostLinks = Math.max(mostLinks, h[4]);
           if (k > 0) {
             bigHeap += h[1] - h[0];
             bigCount += counts.get(k);
@@ -132,10 +137,13 @@ final class Scale {
           single == null ? null : Math.round((single[1] - single[0]) / 1e4) / 100.0);
       json.field("single_container_jvm_total_heap_mb", single == null ? null : Math.round(single[1] / 1e4) / 100.0);
       json.field("threads_total", threads);
+      // The links a container holds, on average: each link counts at both of its ends.
+      json.field("links_per_container", Math.round(links * 10.0 / n) / 10.0);
+      json.field("most_links", mostLinks);
       json.end();
-      System.err.printf("scale %d: converged=%s in %.0f ms, heap/container %.2f MB, threads %d %s%n", n,
-          converged, (last - go) / 1e3, bigCount == 0 ? -1 : bigHeap / (double) bigCount / 1e6, threads,
-          problems);
+      System.err.printf("scale %d: converged=%s in %.0f ms, heap/container %.2f MB, threads %d, links/container %.1f %s%n",
+          n, converged, (last - go) / 1e3, bigCount == 0 ? -1 : bigHeap / (double) bigCount / 1e6, threads,
+          links / (double) n, problems);
     } finally {
       for (Jvm j : jvms) {
         j.close();

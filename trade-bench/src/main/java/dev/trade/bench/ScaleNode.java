@@ -17,8 +17,9 @@ import java.util.List;
  * other (discovery on loopback), each registering one service, prints {@code BUILT <epoch-us>} when
  * all are, and {@code CONVERGED <epoch-us>} once every one of them sees all
  * {@code total} services of the system (or {@code TIMEOUT <seen...>} 60 s after they were built).
- * Then it prints {@code HEAP <baseline> <after> <threads>}: heap in use after full GCs before the
- * containers were built and with them running. Exits when standard input closes (at most 10 min).
+ * Then it prints {@code HEAP <baseline> <after> <threads> <links> <most links>}: heap in use after
+ * full GCs before the containers were built and with them running, and the links its containers
+ * hold, in all and the most one of them holds. Exits when standard input closes (at most 10 min).
  *
  * <p>With {@code -Dbench.progress=true} it also writes to standard error (the JVM's log) how long
  * each container took to build and register, and once a second until convergence how many
@@ -152,8 +153,15 @@ public final class ScaleNode {
       return;
     }
     long after = usedHeapAfterGc();
+    int links = 0;
+    int mostLinks = 0;
+    for (TRADEContainer c : containers) {
+      int n = c.getNeighbours().size();
+      links += n;
+      mostLinks = Math.max(mostLinks, n);
+    }
     System.out.println("HEAP " + baseline + " " + after + " "
-        + ManagementFactory.getThreadMXBean().getThreadCount());
+        + ManagementFactory.getThreadMXBean().getThreadCount() + " " + links + " " + mostLinks);
     System.out.flush();
     while (in.readLine() != null) {
       // Keep the containers up until the parent closes our input.
