@@ -52,7 +52,7 @@ final class Tables {
    */
   boolean table(Registry.Table table, Topology.Route route, long nowNanos) {
     if (route != null) {
-      return registry.applyTable(table, route.distance());
+      return registry.applyTables(List.of(table), Map.of(table.containerId(), route.distance()));
     }
     Waiting was = waiting.get(table.containerId());
     waiting.put(table.containerId(), new Waiting(table, was == null ? nowNanos : was.since()));
@@ -108,13 +108,19 @@ final class Tables {
         }
       }
     }
+    List<Registry.Table> listed = new ArrayList<>();
+    Map<String, Integer> distances = new HashMap<>();
     for (Iterator<Waiting> it = waiting.values().iterator(); it.hasNext(); ) {
       Registry.Table t = it.next().table();
       Topology.Route r = routes.get(t.containerId());
       if (r != null) {
         it.remove();
-        registry.applyTable(t, r.distance());
+        listed.add(t);
+        distances.put(t.containerId(), r.distance());
       }
+    }
+    if (!listed.isEmpty()) {
+      registry.applyTables(listed, distances);
     }
   }
 

@@ -177,11 +177,28 @@ public final class Registry {
   }
 
   /**
-   * Replaces another container's whole table when {@code table} is newer than what is known.
+   * Replaces other containers' whole tables where newer than what is known, with one new snapshot
+   * and one call of the listeners for all: a container that links to a large system lists the
+   * tables of all its containers at once, and each snapshot copies them all.
    *
-   * @return true when applied (the caller floods it on), false when stale
+   * @param distances the distance of each table's owner
+   * @return true when any was applied (the caller floods those on), false when all were stale
    */
-  public synchronized boolean applyTable(Table table, int distance) {
+  public synchronized boolean applyTables(List<Table> tables, Map<String, Integer> distances) {
+    List<Entry> added = new ArrayList<>();
+    List<Entry> removed = new ArrayList<>();
+    boolean changed = false;
+    for (Table t : tables) {
+      changed |= apply(t, distances.get(t.containerId()), added, removed);
+    }
+    if (changed) {
+      publish(added, removed);
+    }
+    return changed;
+  }
+
+  /** Applies {@code table} if newer, adding to {@code added} and {@code removed}; caller publishes. */
+  private boolean apply(Table table, int distance, List<Entry> added, List<Entry> removed) {
     String owner = table.containerId();
     if (owner.equals(containerId)) {
       return false;
@@ -193,7 +210,6 @@ public final class Registry {
     versions.put(owner, table.version());
     Map<Long, Entry> old = tables.getOrDefault(owner, Map.of());
     Map<Long, Entry> fresh = new LinkedHashMap<>();
-    List<Entry> added = new ArrayList<>();
     for (ServiceDescriptor d : table.services()) {
       Entry e = old.get(d.serviceId());
       if (e == null) {
@@ -202,14 +218,12 @@ public final class Registry {
       }
       fresh.put(d.serviceId(), e.withDistance(distance));
     }
-    List<Entry> removed = new ArrayList<>();
     for (Map.Entry<Long, Entry> e : old.entrySet()) {
       if (!fresh.containsKey(e.getKey())) {
         removed.add(e.getValue());
       }
     }
     tables.put(owner, fresh);
-    publish(added, removed);
     return true;
   }
 

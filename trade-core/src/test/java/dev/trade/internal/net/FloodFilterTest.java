@@ -10,6 +10,7 @@ import dev.trade.internal.codec.Limits;
 import dev.trade.internal.registry.Registry;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
@@ -82,7 +83,7 @@ class FloodFilterTest {
     assertTrue(filter.isStale(A, Wire.TABLE, table("x", 1)), "queued already, not applied yet");
     assertTrue(filter.isStale(A, Wire.DELTA, delta("x", 1)), "a table at its version is queued");
     assertFalse(filter.isStale(A, Wire.TABLE, table("x", 2)), "newer");
-    registry.applyTable(new Registry.Table("y", 3, List.of()), 1);
+    registry.applyTables(List.of(new Registry.Table("y", 3, List.of())), Map.of("y", 1));
     assertTrue(filter.isStale(A, Wire.TABLE, table("y", 3)), "applied already");
     assertFalse(filter.isStale(A, Wire.LINKS, new byte[] {1}), "malformed: left to the control thread");
   }
