@@ -23,7 +23,8 @@ import java.util.List;
  *
  * <p>With {@code -Dbench.progress=true} it also writes to standard error (the JVM's log) how long
  * each container took to build and register, and once a second until convergence how many
- * services its least and its best informed containers see.
+ * services its least and its best informed containers see, and which is the least informed and
+ * how many links it has.
  *
  * <p>Arguments: system id, broadcast port, count, total, name prefix.
  */
@@ -116,13 +117,18 @@ public final class ScaleNode {
         report = System.nanoTime();
         int least = Integer.MAX_VALUE;
         int most = 0;
+        TRADEContainer laggard = null;
         for (TRADEContainer c : containers) {
           int seen = c.getAvailableServices(probe).size();
-          least = Math.min(least, seen);
+          if (seen < least) {
+            least = seen;
+            laggard = c;
+          }
           most = Math.max(most, seen);
         }
-        System.err.printf("PROGRESS %d ms after GO: %d..%d of %d services%n",
-            (report - go) / 1_000_000, least, most, total);
+        System.err.printf("PROGRESS %d ms after GO: %d..%d of %d services (the fewest: %s, %d links)%n",
+            (report - go) / 1_000_000, least, most, total, laggard.getName(),
+            laggard.getNeighbours().size());
         if (least >= total - 3) {
           // The last few: who lacks whose service, to tell a slow link from a slow table.
           for (TRADEContainer c : containers) {
