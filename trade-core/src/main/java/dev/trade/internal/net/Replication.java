@@ -269,7 +269,7 @@ final class Replication {
                 send(l, frame);
               }
             }
-            routing.changedSoon(owner.equals(from.peerKey));
+            routing.changedSoon();
           }
           break;
         }

@@ -16,8 +16,8 @@ import java.util.function.Consumer;
  * <p>Routes for received link states are computed once the frames queued on the control thread
  * now have been handled, not after each, and at most once per {@link #GAP_NANOS}: at start-up
  * every container's states arrive in bursts, and each computation walks the whole graph. Changes
- * of this container's own links, and a neighbour's state (which makes a new link usable: the first
- * call to a container that just started waits for it), are followed at once.
+ * of this container's own links are followed at once: they make a new link usable (the first call
+ * to a container that just started waits for it), without waiting for the peer's state.
  *
  * <p>{@link #nextHop} is safe for concurrent use; everything else runs on the control thread.
  */
@@ -40,7 +40,6 @@ final class Routing {
   private Map<String, Topology.Route> routed = Map.of();
   private final Map<String, UUID> ids = new HashMap<>();
   private boolean pending;
-  private boolean soon; // the pending computation is queued without delay
   /** When routes were last computed, unreachable states last pruned, and a hold-down ends. */
   private long computedAt;
   private long prunedAt;
@@ -80,14 +79,13 @@ final class Routing {
     return routed.get(container);
   }
 
-  /** A received link state changed the topology; {@code neighbour}: it is a neighbour's own. */
-  void changedSoon(boolean neighbour) {
-    long wait = neighbour ? 0 : Math.max(0, computedAt + GAP_NANOS - System.nanoTime());
-    if (pending && (!neighbour || soon)) {
-      return; // a computation is queued, soon enough
+  /** A received link state changed the topology. */
+  void changedSoon() {
+    if (pending) {
+      return; // a computation is queued
     }
     pending = true;
-    soon |= wait == 0;
+    long wait = Math.max(0, computedAt + GAP_NANOS - System.nanoTime());
     scheduler.schedule(() -> {
       if (pending) {
         follow();
@@ -98,7 +96,6 @@ final class Routing {
   /** Computes routes now, and lets everything follow them. */
   void follow() {
     pending = false;
-    soon = false;
     long now = System.nanoTime();
     computedAt = now;
     Map<String, Topology.Route> routes = topology.routes();
