@@ -77,6 +77,14 @@ final class FloodFilter {
   }
 
   private void heard(String owner, long version, Object from) {
+    Holders known = holders.get(owner);
+    if (known != null && known.version == version) {
+      // Another copy of the newest version: most are, and compute would lock the map's bin for
+      // each, with every reader of the container on the same few owners. Should a newer version
+      // replace these holders meanwhile, this note is lost, and it no longer matters.
+      known.links.add(from);
+      return;
+    }
     holders.compute(owner, (o, h) -> {
       if (h == null || h.version < version) {
         return new Holders(version, from);
