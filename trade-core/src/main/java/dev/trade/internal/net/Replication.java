@@ -32,14 +32,6 @@ final class Replication {
   private static final long STATE_GRACE_NANOS = 60_000_000_000L;
   /** The least time between two floods of this container's own link state, but see linkDown. */
   static final long OWN_FLOOD_GAP_NANOS = 50_000_000L;
-  /**
-   * How long a new link to a container that was reachable already waits before this container's
-   * link state goes out with it (with whatever else changed by then). Such a link only shortens
-   * paths: its two ends use it at once ({@link Topology}), everyone else the old paths meanwhile.
-   * While a large system starts, a container gains such a link every second or so, and every
-   * version of its state reaches every container, most of them over several links.
-   */
-  static final long SHORTCUT_DELAY_NANOS = 1_000_000_000L;
 
   private final String selfId;
   private final Registry registry;
@@ -56,12 +48,8 @@ final class Replication {
   /** When this container's own link state last went out (nanoTime), and which version. */
   private long ownFloodAt;
   private long ownFlooded;
-  /** Whether a flood of the own state is scheduled, and when it is due (nanoTime). */
   private boolean ownFloodPending;
-  private long ownFloodDue;
   private Set<String> ownFloodedNeighbours = Set.of();
-  /** Neighbours linked since the last flood that were reachable before (see linkUp). */
-  private final Set<String> shortcuts = new HashSet<>();
   /**
    * New links whose peer's DIGEST has not been answered yet. They get no floods until then: the
    * answer carries everything current, and a table flooded before it would arrive ahead of the
@@ -115,15 +103,8 @@ final class Replication {
   }
 
   void linkUp(Link link) {
-    // A peer reachable already: the link only shortens paths, and may wait for the next flood.
-    boolean shortcut = topology.route(link.peerKey) != null;
     ownNeighboursChanged();
-    if (shortcut) {
-      shortcuts.add(link.peerKey);
-      floodOwnBy(System.nanoTime() + SHORTCUT_DELAY_NANOS, null);
-    } else {
-      floodOwnSoon(link);
-    }
+    floodOwnSoon(link);
     if (link.digests) {
       // What the peer lacks follows its own DIGEST (received below).
       unanswered.add(link);
@@ -156,52 +137,36 @@ final class Replication {
    * @param except a new link that gets the current state in the link-up exchange, or null
    */
   private void floodOwnSoon(Link except) {
-    floodOwnBy(ownFlooded == 0 ? System.nanoTime() : ownFloodAt + OWN_FLOOD_GAP_NANOS, except);
-  }
-
-  /**
-   * Floods this container's own state at {@code due} (nanoTime; at once if that has passed), unless
-   * a flood is due as early already.
-   *
-   * @param except see {@link #floodOwnSoon}
-   */
-  private void floodOwnBy(long due, Link except) {
-    if (ownFloodPending && ownFloodDue - due <= 0) {
+    long since = System.nanoTime() - ownFloodAt;
+    if (ownFloodPending) {
       return;
     }
-    long wait = due - System.nanoTime();
-    if (wait <= 0) {
+    if (ownFlooded == 0 || since >= OWN_FLOOD_GAP_NANOS) {
       floodOwn(topology.own(), except);
       return;
     }
     ownFloodPending = true;
-    ownFloodDue = due;
     scheduler.schedule(() -> {
-      if (ownFloodPending && ownFloodDue == due) { // else flooded meanwhile, or due earlier
-        ownFloodPending = false;
-        if (topology.own().version() > ownFlooded) {
-          floodOwn(topology.own(), null);
-        }
+      ownFloodPending = false;
+      if (topology.own().version() > ownFlooded) {
+        floodOwn(topology.own(), null);
       }
-    }, wait);
+    }, OWN_FLOOD_GAP_NANOS - since);
   }
 
   /**
    * Floods this container's own state now if the last one flooded does not list {@code from} yet:
    * a table passed on from a new neighbour must not overtake the state that routes to its owner,
-   * or receivers would list services that they cannot call yet. Not for a shortcut (linkUp): its
-   * peer was reachable without the new link, and so is all that is reached through it.
+   * or receivers would list services that they cannot call yet.
    */
   private void ownStateBefore(Link from) {
     if (ownFloodPending && !ownFloodedNeighbours.contains(from.peerKey)
-        && !shortcuts.contains(from.peerKey) && topology.own().version() > ownFlooded) {
+        && topology.own().version() > ownFlooded) {
       floodOwn(topology.own(), null);
     }
   }
 
   private void floodOwn(Topology.LinkState own, Link except) {
-    ownFloodPending = false;
-    shortcuts.clear();
     ownFloodAt = System.nanoTime();
     ownFlooded = own.version();
     ownFloodedNeighbours = own.neighbours();

@@ -16,7 +16,7 @@ import java.util.concurrent.ConcurrentHashMap;
  * <p>An edge counts only when both ends list each other, so a dead container's stale list cannot
  * keep it reachable once its neighbours have dropped it; this container's own links count as soon
  * as it lists them (it knows they are alive), so that a new link carries calls before the peer's
- * state arrives, and before the peer floods it at all (see Replication). Routes are loop-free because each container
+ * state arrives. Routes are loop-free because each container
  * forwards along a shortest path of the same graph, and a hop limit on every forwarded frame bounds
  * the damage while views disagree.
  *
