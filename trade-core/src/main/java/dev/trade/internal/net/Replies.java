@@ -59,15 +59,21 @@ final class Replies {
   }
 
   /**
-   * Sends a reply to its caller: along the route, or straight back over the link the call came in
-   * on when the caller is that neighbour or the route is missing or broken. A call can overtake
-   * link states (a new neighbour's first calls, calls along a path that just formed or around one
-   * that just broke), and the neighbour it came from knows the way back: it just forwarded it.
+   * Sends a reply to its caller: straight back over the link the call came in on, else (that link
+   * closed) along the route. The neighbour that passed the call on is the caller or knows the way
+   * back, having just forwarded it, and that way is as short as the caller's route here. The route
+   * from here may not know it yet (a call can overtake link states: a new neighbour's first calls,
+   * calls along a path that just formed), or may still lead over a link that is going down, whose
+   * failing write can come after this returns (another thread writing, or the reader's burst) and
+   * would lose the reply, leaving the caller waiting for its deadline.
    */
   void sendReply(Link from, byte[] call, byte[] frame) {
+    if (sent(from, frame)) {
+      return;
+    }
     UUID caller = Frames.source(call);
-    Link route = from != null && from.peerId.equals(caller) ? from : router.nextHop(caller);
-    if (!sent(route, frame) && (route == from || !sent(from, frame))) {
+    Link route = router.nextHop(caller);
+    if (route == from || !sent(route, frame)) {
       deliver(caller, frame, 0); // both failed just now: wait for routes to settle
     }
   }

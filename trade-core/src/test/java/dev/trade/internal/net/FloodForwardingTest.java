@@ -12,13 +12,7 @@ import dev.trade.internal.registry.Registry;
 import java.io.DataInputStream;
 import java.io.IOException;
 import java.io.InputStream;
-import java.net.InetAddress;
-import java.net.InetSocketAddress;
-import java.net.ServerSocket;
-import java.net.Socket;
-import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.UUID;
@@ -38,34 +32,23 @@ class FloodForwardingTest {
   private final Codec codec = new Codec(AllowList.withDefaults(), Limits.DEFAULT, InfoBinding.NONE);
   private final ScheduledExecutorService timer = Executors.newSingleThreadScheduledExecutor();
   private final Map<UUID, Link> links = new ConcurrentHashMap<>();
-  private final List<Socket> sockets = new ArrayList<>();
+  private final LoopbackLinks loopback = new LoopbackLinks();
   private final Replication replication = new Replication(self, new Registry(self.toString(), "x", "host"),
       codec, links, new RemoteCalls(self, codec, container -> null, null, timer, 1 << 20),
       60_000_000_000L, (task, delay) -> { }, container -> { });
 
   @AfterEach
   void close() throws IOException {
-    links.values().forEach(l -> l.close("done"));
-    for (Socket s : sockets) {
-      s.close();
-    }
+    loopback.close();
     timer.shutdownNow();
   }
 
   /** A link to a neighbour named {@code name}; returns what the neighbour reads. */
   private InputStream link(String name, Link[] made) throws IOException {
-    try (ServerSocket server = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
-      Socket near = new Socket();
-      near.connect(new InetSocketAddress(InetAddress.getLoopbackAddress(), server.getLocalPort()));
-      Socket far = server.accept();
-      sockets.add(near);
-      sockets.add(far);
-      Handshake.Peer peer = new Handshake.Peer(UUID.randomUUID(), name, "host", List.of(), null);
-      Link link = new Link(near, peer, true, 1 << 20);
-      links.put(peer.containerId(), link);
-      made[0] = link;
-      return far.getInputStream();
-    }
+    InputStream[] far = new InputStream[1];
+    made[0] = loopback.link(UUID.randomUUID(), name, far);
+    links.put(made[0].peerId, made[0]);
+    return far[0];
   }
 
   @Test
