@@ -196,7 +196,8 @@ final class Finder implements AutoCloseable {
    * busy, it hears the others' answers over seconds, and each choice made on part of them dials
    * containers (ring successors above all) that a later choice with more of them does not choose,
    * links that stay. Routing tells, once the first link's states are applied, how many containers
-   * there are: it waits until then and until it has heard nine in ten of them, or for
+   * there are: it waits until then (until routing reaches at least half of those heard) and until
+   * it has heard nine in ten of those reached, or for
    * {@link #HOLD_MAX_NANOS} after the first choice (containers beyond discovery's reach, on the far
    * side of a bridging container, are never heard). Guarded by this.
    */
@@ -217,8 +218,10 @@ final class Finder implements AutoCloseable {
     if (sinceFirst >= HOLD_MAX_NANOS || heard <= 1) {
       return false; // waited long enough, or nothing to choose between
     }
-    // Routing behind discovery (the first link's states not applied yet), or most not heard yet.
-    return reachable < heard || heard * 10L < reachable * 9L;
+    // Routing far behind discovery (the first link's states not applied yet; a few containers
+    // heard but not reachable are normal in a growing system: they have just started), or most
+    // not heard yet.
+    return reachable * 2L < heard || heard * 10L < reachable * 9L;
   }
 
   private Set<UUID> linkedNow() {

@@ -7,16 +7,19 @@ import org.junit.jupiter.api.Test;
 
 /**
  * When a newcomer waits before choosing whom to dial beyond its first contact: until routing (from
- * its first link on) says how many containers there are and it has heard nine in ten of them, for
- * at most {@link Finder#HOLD_MAX_NANOS} after its first choice.
+ * its first link on) says how many containers there are (it reaches half of those heard) and it
+ * has heard nine in ten of them, for at most {@link Finder#HOLD_MAX_NANOS} after its first choice.
  */
 class FinderHoldTest {
   private static final long SOON = 100_000_000L;
 
   @Test
-  void waitsWhileRoutingReachesFewerThanItHeard() {
+  void waitsWhileRoutingReachesFewerThanHalfOfThoseHeard() {
     assertTrue(Finder.holds(SOON, 5, 0), "no link up yet");
     assertTrue(Finder.holds(SOON, 30, 2), "the first link's states not applied yet");
+    assertTrue(Finder.holds(SOON, 30, 14));
+    assertFalse(Finder.holds(SOON, 9, 8), "one heard that has just started, not linked yet");
+    assertFalse(Finder.holds(SOON, 30, 28));
   }
 
   @Test
