@@ -126,16 +126,20 @@ class Scenario:
             ba = call(B, "host-A", "A on [10.200.1.1]")
             return "A->B answered by B on 10.200.2.2 (%s ms), B->A by A on 10.200.1.1 (%s ms)" % (ab, ba)
 
-        def killed():
-            # A call from A is in flight at B (it answers after 10 s) when C dies.
+        def c_stops(sig, wait_s):
+            """Sends C `sig` while a call from A is in flight at B (it answers after 10 s); returns
+            when, and how many ms after it A and B each saw the other two leave."""
             A.send("call host-B 10000")
             B.expect(r"^SERVING whereAmIAfter\(10000\) ", STEP_S)
-            t_kill = C.kill(signal.SIGKILL)
+            t = C.kill(sig)
             delays = {}
             for n, others in ((A, "BC"), (B, "AC")):
                 for other in others:
-                    line = n.expect(left(other), STEP_S)
-                    delays[(n.host, other)] = (line.stamp - t_kill) * 1000
+                    delays[(n.host, other)] = (n.expect(left(other), wait_s).stamp - t) * 1000
+            return t, delays
+
+        def killed():
+            t_kill, delays = c_stops(signal.SIGKILL, STEP_S)
             C.wait_exit(STEP_S)
             slow = {k: v for k, v in delays.items() if v > KILL_DETECTION_MS}
             text = describe_left(delays)
@@ -171,14 +175,7 @@ class Scenario:
             return "A->B %s ms, B->A %s ms through the new C" % (ab, ba)
 
         def frozen():
-            A.send("call host-B 10000")
-            B.expect(r"^SERVING whereAmIAfter\(10000\) ", STEP_S)
-            t_stop = C.kill(signal.SIGSTOP)
-            delays = {}
-            for n, others in ((A, "BC"), (B, "AC")):
-                for other in others:
-                    line = n.expect(left(other), SILENT_DETECTION_MS / 1000.0 + STEP_S)
-                    delays[(n.host, other)] = (line.stamp - t_stop) * 1000
+            t_stop, delays = c_stops(signal.SIGSTOP, SILENT_DETECTION_MS / 1000.0 + STEP_S)
             text = describe_left(delays)
             if any(v > SILENT_DETECTION_MS or v < SILENT_DETECTION_MIN_MS for v in delays.values()):
                 raise StepFailure("left outside %d..%d ms after SIGSTOP (FAILURETIMEOUT=%d): %s" % (
