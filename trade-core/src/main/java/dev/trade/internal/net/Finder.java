@@ -197,9 +197,9 @@ final class Finder implements AutoCloseable {
    * containers (ring successors above all) that a later choice with more of them does not choose,
    * links that stay. Routing tells, once the first link's states are applied, how many containers
    * there are: it waits until then (until routing reaches at least half of those heard) and until
-   * it has heard nine in ten of those reached, or for
-   * {@link #HOLD_MAX_NANOS} after the first choice (containers beyond discovery's reach, on the far
-   * side of a bridging container, are never heard). Guarded by this.
+   * it has heard nine in ten of those reached, or for {@link #HOLD_MAX_NANOS} after the first
+   * choice (containers beyond discovery's reach, on the far side of a bridging container, are
+   * never heard). Guarded by this.
    */
   private boolean holding() {
     long now = System.nanoTime();
