@@ -16,6 +16,8 @@ import time
 from multihost_net import StepFailure, java_binary
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+# Links coming and going are DEBUG lines; the .log files keep them for the steps that read them.
+LOGGING = os.path.join(ROOT, "config", "logging.properties")
 CLASSPATH = os.pathsep.join([os.path.join(ROOT, "trade-core", "target", "classes"),
                              os.path.join(ROOT, "trade-examples", "target", "classes")])
 MAIN_CLASS = "dev.trade.examples.system.HostNode"
@@ -77,7 +79,8 @@ class Node:
         self.quit_at = None
         self.id = None
         cmd = self.topology.exec_prefix(self.host) + [
-            java_binary(), "-XX:TieredStopAtLevel=1", "-cp", CLASSPATH, MAIN_CLASS,
+            java_binary(), "-XX:TieredStopAtLevel=1", "-cp", CLASSPATH,
+            "-Djava.util.logging.config.file=" + LOGGING, MAIN_CLASS,
             self.host,
             "DISCOVERYRANGE=subnet",
             "FAILURETIMEOUT=%d" % FAILURE_TIMEOUT_MS,

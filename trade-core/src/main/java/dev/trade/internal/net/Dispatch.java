@@ -9,6 +9,9 @@ import java.io.IOException;
  * life. Safe for concurrent use.
  */
 final class Dispatch implements Link.Handler {
+  /** Why a link closed when its peer said GOODBYE: an orderly close. */
+  static final String GOODBYE = "said goodbye";
+
   private final RemoteCalls calls;
   private final Replication replication;
   private final Network network;
@@ -35,7 +38,7 @@ final class Dispatch implements Link.Handler {
       case Wire.PING:
         break;
       case Wire.GOODBYE:
-        link.close("said goodbye");
+        link.close(GOODBYE);
         break;
       case Wire.LINKS:
       case Wire.TABLE:

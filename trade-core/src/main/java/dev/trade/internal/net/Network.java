@@ -242,7 +242,9 @@ public final class Network implements AutoCloseable {
         existing.close("duplicate link");
       }
       links.put(peer.containerId(), link);
-      LOG.log(Level.INFO, "{0}: linked to {1} ({2})", name, peer.name(), socket.getRemoteSocketAddress());
+      // DEBUG, as is an orderly close: at INFO, 100 containers in one JVM spent seconds of their
+      // control threads queued for the logging handler's lock (docs/configuration.md, Logging).
+      LOG.log(Level.DEBUG, "{0}: linked to {1} ({2})", name, peer.name(), socket.getRemoteSocketAddress());
       replication.linkUp(link);
     });
     if (!accepted) {
@@ -300,7 +302,8 @@ public final class Network implements AutoCloseable {
     live.remove(link);
     onControl(() -> {
       if (links.remove(link.peerId, link)) {
-        LOG.log(closed ? Level.DEBUG : Level.INFO, "{0}: link to {1} closed: {2}", name,
+        boolean orderly = closed || reason.equals(Dispatch.GOODBYE);
+        LOG.log(orderly ? Level.DEBUG : Level.INFO, "{0}: link to {1} closed: {2}", name,
             link.peerName, reason);
         calls.failVia(link.peerId, "the connection to " + link.peerName + " was lost ("
             + reason + ")");

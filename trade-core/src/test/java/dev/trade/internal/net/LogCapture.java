@@ -10,8 +10,8 @@ import java.util.logging.SimpleFormatter;
 
 /**
  * Records what the networking code logs. {@code System.Logger} maps to java.util.logging unless
- * another backend is installed, so a handler on the JUL logger {@code dev.trade.net} sees it all.
- * Close it to remove the handler.
+ * another backend is installed, so a handler on the JUL logger {@code dev.trade.net} sees it all,
+ * DEBUG included (JUL's {@code FINE}). Close it to remove the handler and restore the level.
  */
 final class LogCapture extends Handler implements AutoCloseable {
   private final Logger logger = Logger.getLogger("dev.trade.net");
@@ -19,8 +19,12 @@ final class LogCapture extends Handler implements AutoCloseable {
   // Guarded by this.
   private final List<String> lines = new ArrayList<>();
 
+  /** The logger's own level before; DEBUG lines (FINE) are only made while capturing. */
+  private final Level before = logger.getLevel();
+
   LogCapture() {
     setLevel(Level.ALL);
+    logger.setLevel(Level.ALL);
     logger.addHandler(this);
   }
 
@@ -68,5 +72,6 @@ final class LogCapture extends Handler implements AutoCloseable {
   @Override
   public void close() {
     logger.removeHandler(this);
+    logger.setLevel(before);
   }
 }

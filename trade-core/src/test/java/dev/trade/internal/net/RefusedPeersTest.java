@@ -83,9 +83,9 @@ class RefusedPeersTest {
     assertTrue(visitor.getAvailableServices(GATE).isEmpty(), "the gate's service reached " + name);
     assertTrue(gate.getAvailableServices(VISITOR).stream()
         .noneMatch(s -> s.getContainerName().equals(name)), name + "'s service reached the gate");
-    assertTrue(log.has(Level.INFO, "ally: linked to gate"), log.tail());
-    assertFalse(log.has(Level.INFO, "linked to " + name), log.tail());
-    assertFalse(log.has(Level.INFO, name + ": linked to"), log.tail());
+    assertTrue(log.has(Level.FINE, "ally: linked to gate"), log.tail());
+    assertFalse(log.has(Level.FINE, "linked to " + name), log.tail());
+    assertFalse(log.has(Level.FINE, name + ": linked to"), log.tail());
   }
 
   @Test
