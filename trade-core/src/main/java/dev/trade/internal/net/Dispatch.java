@@ -43,10 +43,7 @@ final class Dispatch implements Link.Handler {
       case Wire.LINKS:
       case Wire.TABLE:
       case Wire.DELTA:
-        if (!replication.isStale(link, type, payload)) {
-          network.onControl(() -> replication.received(link, type, payload));
-        }
-        break;
+        // Not stale: the link asked isStale first.
       case Wire.TABLE_REQUEST:
       case Wire.DIGEST:
         network.onControl(() -> replication.received(link, type, payload));
@@ -55,6 +52,12 @@ final class Dispatch implements Link.Handler {
         throw new IOException("unknown frame type " + type);
     }
     return true;
+  }
+
+  @Override
+  public boolean isStale(Link link, int type, byte[] buf, int off, int len) {
+    return (type == Wire.LINKS || type == Wire.TABLE || type == Wire.DELTA)
+        && replication.isStale(link, type, buf, off, len);
   }
 
   @Override

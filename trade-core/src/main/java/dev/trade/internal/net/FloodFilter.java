@@ -46,16 +46,17 @@ final class FloodFilter {
   }
 
   /**
-   * Whether a LINKS, TABLE or DELTA payload that came over link {@code from} (compared by
+   * Whether a LINKS, TABLE or DELTA payload ({@code len} bytes of {@code buf} from {@code off},
+   * read only during the call) that came over link {@code from} (compared by
    * identity) is a copy of a version applied here already, or queued
    * already from another link (a DELTA: a TABLE at that version or later is queued). A TABLE that
    * passes is kept on the control thread, listed or waiting for a route ({@link Tables}), so a
    * copy of it is never needed again; a DELTA that passes is not counted, since one that does not
    * follow makes the control thread ask for the whole TABLE at that version.
    */
-  boolean isStale(Object from, int type, byte[] payload) {
+  boolean isStale(Object from, int type, byte[] buf, int off, int len) {
     try {
-      ByteSource in = ByteSource.of(payload);
+      ByteSource in = ByteSource.of(buf, off, len);
       String owner = in.readText(MAX_TEXT);
       long version = in.readLong();
       if (type == Wire.LINKS) {

@@ -35,10 +35,19 @@ final class Link {
     /** @return true to go on reading on this thread, false if reading went on in another one */
     boolean frame(Link link, int type, byte[] payload) throws IOException;
 
+    /**
+     * Whether a frame is a copy of something this container has: then it is dropped, not handed
+     * to {@link #frame}. Asked once per frame, before {@code frame}; the payload is {@code len}
+     * bytes of {@code buf} from {@code off}, often the link's input buffer, valid only during
+     * the call.
+     */
+    default boolean isStale(Link link, int type, byte[] buf, int off, int len) {
+      return false;
+    }
+
     void closed(Link link, String reason);
   }
 
-  private static final int READ_CHUNK = 64 * 1024;
   /** The link whose call the current thread serves on that link's reading thread, if any. */
   private static final ThreadLocal<Link> SERVING = new ThreadLocal<>();
 
@@ -78,6 +87,7 @@ final class Link {
   // What the watch saw at its last look; read and written by the watch thread only.
   private long watchSeen;
   volatile long lastReceived = System.nanoTime();
+  private final Runnable arrived = () -> lastReceived = System.nanoTime();
   volatile long lastSent = System.nanoTime();
   /**
    * A heartbeat PING to this link is queued or being sent (a send may block while the peer reads
@@ -305,12 +315,23 @@ final class Link {
         int version;
         int type;
         byte[] payload;
+        boolean judged = false; // whether the handler has said the frame is not stale
         if (cipher == null) {
           version = in.readUnsignedByte();
           type = in.readUnsignedByte();
-          payload = readPayload(length - 2);
+          int size = length - 2;
+          if (version == Wire.VERSION && input.buffered() >= size) {
+            // Most flood frames are copies: judged in the buffer, they are dropped uncopied.
+            if (handler.isStale(this, type, input.buffer(), input.position(), size)) {
+              input.consume(size);
+              lastReceived = System.nanoTime();
+              continue;
+            }
+            judged = true;
+          }
+          payload = input.readPayload(size, arrived);
         } else {
-          byte[] sealed = readPayload(length);
+          byte[] sealed = input.readPayload(length, arrived);
           byte[] body;
           try {
             body = cipher.open(sealed);
@@ -327,6 +348,9 @@ final class Link {
           break;
         }
         lastReceived = System.nanoTime();
+        if (!judged && handler.isStale(this, type, payload, 0, payload.length)) {
+          continue;
+        }
         burst = input.holdsWholeFrame(); // more to hand out after this one: see send
         if (!handler.frame(this, type, payload)) {
           return; // reading went on in another thread while this one served a call
@@ -343,24 +367,6 @@ final class Link {
     }
     close(reason);
     handler.closed(this, reason);
-  }
-
-  /**
-   * Reads a frame's payload, noting the time whenever bytes arrive: a large frame on a slow link
-   * can take longer than FAILURETIMEOUT, and a peer whose bytes keep coming is not silent.
-   */
-  private byte[] readPayload(int size) throws IOException {
-    byte[] payload = new byte[size];
-    int done = 0;
-    while (done < size) {
-      int n = in.read(payload, done, Math.min(READ_CHUNK, size - done));
-      if (n < 0) {
-        throw new EOFException("connection closed by " + peerName + " within a frame");
-      }
-      done += n;
-      lastReceived = System.nanoTime();
-    }
-    return payload;
   }
 
   boolean isClosed() {

@@ -88,8 +88,8 @@ final class Replication {
   }
 
   /** See {@link FloodFilter#isStale}. Any thread. */
-  boolean isStale(Link from, int type, byte[] payload) {
-    return filter.isStale(from, type, payload);
+  boolean isStale(Link from, int type, byte[] buf, int off, int len) {
+    return filter.isStale(from, type, buf, off, len);
   }
 
   /** How many other containers there are routes to now. Any thread. */

@@ -31,28 +31,36 @@ class FloodFilterTest {
     return Arrays.copyOfRange(frame, Wire.HEADER, frame.length);
   }
 
+  /** Asks the filter about {@code payload} as a link's input buffer holds it: amid other bytes. */
+  private boolean stale(Object from, int type, byte[] payload) {
+    byte[] buf = new byte[payload.length + 7];
+    Arrays.fill(buf, (byte) 0x5a);
+    System.arraycopy(payload, 0, buf, 3, payload.length);
+    return filter.isStale(from, type, buf, 3, payload.length);
+  }
+
   private static byte[] links(String owner, long version) {
     return payload(StateFrames.links(new Topology.LinkState(owner, version, Set.of("a"))));
   }
 
   @Test
   void aLinkStateIsQueuedOnceWhateverTheLinksItComesOver() {
-    assertFalse(filter.isStale(A, Wire.LINKS, links("b", 1)));
-    assertTrue(filter.isStale(A, Wire.LINKS, links("b", 1)), "queued already, not applied yet");
-    assertFalse(filter.isStale(A, Wire.LINKS, links("b", 2)), "newer");
-    assertTrue(filter.isStale(A, Wire.LINKS, links("b", 1)), "older than one queued");
-    assertTrue(filter.isStale(A, Wire.LINKS, links("me", 9)), "our own");
+    assertFalse(stale(A, Wire.LINKS, links("b", 1)));
+    assertTrue(stale(A, Wire.LINKS, links("b", 1)), "queued already, not applied yet");
+    assertFalse(stale(A, Wire.LINKS, links("b", 2)), "newer");
+    assertTrue(stale(A, Wire.LINKS, links("b", 1)), "older than one queued");
+    assertTrue(stale(A, Wire.LINKS, links("me", 9)), "our own");
   }
 
   @Test
   void linksThatSentAVersionNeedNoCopyOfIt() {
-    assertFalse(filter.isStale(A, Wire.LINKS, links("b", 1)));
-    assertTrue(filter.isStale(B, Wire.LINKS, links("b", 1)));
+    assertFalse(stale(A, Wire.LINKS, links("b", 1)));
+    assertTrue(stale(B, Wire.LINKS, links("b", 1)));
     assertTrue(filter.hasCopy(A, "b", 1));
     assertTrue(filter.hasCopy(B, "b", 1));
     assertFalse(filter.hasCopy(C, "b", 1), "C never sent it");
     assertFalse(filter.hasCopy(A, "x", 1), "another owner");
-    assertFalse(filter.isStale(C, Wire.LINKS, links("b", 2)));
+    assertFalse(stale(C, Wire.LINKS, links("b", 2)));
     assertTrue(filter.hasCopy(C, "b", 1), "a newer version is queued: that one goes out instead");
     assertFalse(filter.hasCopy(A, "b", 2), "A sent only the older one");
     assertTrue(filter.hasCopy(C, "b", 2));
@@ -60,13 +68,13 @@ class FloodFilterTest {
 
   @Test
   void aPrunedLinkStateMayComeAgain() {
-    assertFalse(filter.isStale(A, Wire.LINKS, links("b", 1)));
+    assertFalse(stale(A, Wire.LINKS, links("b", 1)));
     topology.apply(new Topology.LinkState("b", 1, Set.of("a")));
-    assertTrue(filter.isStale(A, Wire.LINKS, links("b", 1)));
+    assertTrue(stale(A, Wire.LINKS, links("b", 1)));
     topology.pruneUnreachable(0, 1);
     topology.pruneUnreachable(10, 1); // unreachable for longer than the grace: forgotten
     filter.pruned();
-    assertFalse(filter.isStale(A, Wire.LINKS, links("b", 1)));
+    assertFalse(stale(A, Wire.LINKS, links("b", 1)));
   }
 
   private byte[] table(String owner, long version) {
@@ -79,29 +87,29 @@ class FloodFilterTest {
 
   @Test
   void aTableIsQueuedOnceWhateverTheLinksItComesOver() {
-    assertFalse(filter.isStale(A, Wire.TABLE, table("x", 1)));
-    assertTrue(filter.isStale(A, Wire.TABLE, table("x", 1)), "queued already, not applied yet");
-    assertTrue(filter.isStale(A, Wire.DELTA, delta("x", 1)), "a table at its version is queued");
-    assertFalse(filter.isStale(A, Wire.TABLE, table("x", 2)), "newer");
+    assertFalse(stale(A, Wire.TABLE, table("x", 1)));
+    assertTrue(stale(A, Wire.TABLE, table("x", 1)), "queued already, not applied yet");
+    assertTrue(stale(A, Wire.DELTA, delta("x", 1)), "a table at its version is queued");
+    assertFalse(stale(A, Wire.TABLE, table("x", 2)), "newer");
     registry.applyTables(List.of(new Registry.Table("y", 3, List.of())), Map.of("y", 1));
-    assertTrue(filter.isStale(A, Wire.TABLE, table("y", 3)), "applied already");
-    assertFalse(filter.isStale(A, Wire.LINKS, new byte[] {1}), "malformed: left to the control thread");
+    assertTrue(stale(A, Wire.TABLE, table("y", 3)), "applied already");
+    assertFalse(stale(A, Wire.LINKS, new byte[] {1}), "malformed: left to the control thread");
   }
 
   @Test
   void aDeltaThatPassesLetsTheTableAtItsVersionPass() {
-    assertFalse(filter.isStale(A, Wire.DELTA, delta("x", 5)));
+    assertFalse(stale(A, Wire.DELTA, delta("x", 5)));
     // Not following what is known here, the control thread asks for the table at that version.
-    assertFalse(filter.isStale(A, Wire.TABLE, table("x", 5)), "the table asked for was dropped");
+    assertFalse(stale(A, Wire.TABLE, table("x", 5)), "the table asked for was dropped");
   }
 
   @Test
   void aTableForgottenHereMayComeAgain() {
-    assertFalse(filter.isStale(A, Wire.TABLE, table("x", 1)));
+    assertFalse(stale(A, Wire.TABLE, table("x", 1)));
     filter.pruned(); // neither listed nor waiting: forgotten
-    assertFalse(filter.isStale(A, Wire.TABLE, table("x", 1)));
+    assertFalse(stale(A, Wire.TABLE, table("x", 1)));
     tables.table(new Registry.Table("x", 1, List.of()), null, 0); // waits for a route
     filter.pruned();
-    assertTrue(filter.isStale(A, Wire.TABLE, table("x", 1)), "waiting for a route: kept");
+    assertTrue(stale(A, Wire.TABLE, table("x", 1)), "waiting for a route: kept");
   }
 }

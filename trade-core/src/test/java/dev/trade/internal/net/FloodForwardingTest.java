@@ -63,8 +63,8 @@ class FloodForwardingTest {
         Set.of(UUID.randomUUID().toString())));
     byte[] state = Arrays.copyOfRange(frame, Wire.HEADER, frame.length);
     // The readers of a and b: a's copy queues for the control thread, b's is dropped as a copy.
-    assertFalse(replication.isStale(a[0], Wire.LINKS, state));
-    assertTrue(replication.isStale(b[0], Wire.LINKS, state));
+    assertFalse(replication.isStale(a[0], Wire.LINKS, frame, Wire.HEADER, state.length));
+    assertTrue(replication.isStale(b[0], Wire.LINKS, frame, Wire.HEADER, state.length));
     // The control thread applies a's copy and passes it on; on loopback, what is written is at
     // the far end when the write returns.
     replication.received(a[0], Wire.LINKS, state);
