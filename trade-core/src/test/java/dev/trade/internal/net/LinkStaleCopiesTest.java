@@ -6,9 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import dev.trade.internal.codec.ByteSink;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.net.InetAddress;
-import java.net.InetSocketAddress;
-import java.net.ServerSocket;
 import java.net.Socket;
 import java.util.List;
 import java.util.UUID;
@@ -19,7 +16,6 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -31,25 +27,14 @@ import org.junit.jupiter.api.Test;
 class LinkStaleCopiesTest {
   private static final byte STALE = 1;
   private static final byte FRESH = 2;
-  private ServerSocket server;
-  private Socket near;
-  private Socket far;
+  private final LoopbackLinks links = new LoopbackLinks();
+  private final Socket[] far = new Socket[1];
   private final ExecutorService workers = Executors.newCachedThreadPool();
   private final ReadWatch watch = new ReadWatch(List.of(), workers, "test");
 
-  @BeforeEach
-  void connect() throws IOException {
-    server = new ServerSocket(0, 1, InetAddress.getLoopbackAddress());
-    near = new Socket();
-    near.connect(new InetSocketAddress(InetAddress.getLoopbackAddress(), server.getLocalPort()));
-    far = server.accept();
-  }
-
   @AfterEach
   void close() throws IOException {
-    near.close();
-    far.close();
-    server.close();
+    links.close();
     watch.close();
     workers.shutdownNow();
   }
@@ -86,10 +71,8 @@ class LinkStaleCopiesTest {
   }
 
   private Judge start() throws IOException {
-    Link link = new Link(near, new Handshake.Peer(UUID.randomUUID(), "C", "host", List.of(), null),
-        true, 1 << 20);
     Judge judge = new Judge();
-    link.start(judge, watch);
+    links.link(UUID.randomUUID(), "C", far).start(judge, watch);
     return judge;
   }
 
@@ -98,8 +81,8 @@ class LinkStaleCopiesTest {
     for (byte[] f : frames) {
       all.write(f);
     }
-    far.getOutputStream().write(all.toByteArray()); // one write: the reader finds them buffered
-    far.getOutputStream().flush();
+    far[0].getOutputStream().write(all.toByteArray()); // one write: the reader finds them buffered
+    far[0].getOutputStream().flush();
   }
 
   private static void assertFresh(byte[] payload, int size) {

@@ -11,9 +11,9 @@ import java.util.List;
 import java.util.UUID;
 
 /**
- * Links over loopback socket pairs, not started (nothing reads them here), for tests that look at
- * what a container writes to its neighbours: on loopback, what is written is at the far end when
- * the write returns. {@link #close} closes them all.
+ * Links over loopback socket pairs, not started (nothing reads them unless a test starts them),
+ * for tests that look at what a container writes to its neighbours (on loopback, what is written
+ * is at the far end when the write returns) or at how a link reads. {@link #close} closes them all.
  */
 final class LoopbackLinks implements AutoCloseable {
   private final List<Socket> sockets = new ArrayList<>();
@@ -25,6 +25,18 @@ final class LoopbackLinks implements AutoCloseable {
    * @param far gets, at index 0, what the neighbour reads; a read that waits 5 s fails
    */
   Link link(UUID id, String name, InputStream[] far) throws IOException {
+    Socket[] other = new Socket[1];
+    Link link = link(id, name, other);
+    far[0] = other[0].getInputStream();
+    return link;
+  }
+
+  /**
+   * A link to a neighbour with this id and name.
+   *
+   * @param far gets, at index 0, the neighbour's socket; a read that waits 5 s fails
+   */
+  Link link(UUID id, String name, Socket[] far) throws IOException {
     try (ServerSocket server = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
       Socket near = new Socket();
       near.connect(new InetSocketAddress(InetAddress.getLoopbackAddress(), server.getLocalPort()));
@@ -32,7 +44,7 @@ final class LoopbackLinks implements AutoCloseable {
       sockets.add(near);
       sockets.add(other);
       other.setSoTimeout(5_000); // a frame that went elsewhere fails the read, not hangs it
-      far[0] = other.getInputStream();
+      far[0] = other;
       Link link = new Link(near, new Handshake.Peer(id, name, "host", List.of(), null), true, 1 << 20);
       links.add(link);
       return link;
