@@ -84,6 +84,11 @@ final class Replication {
           if (via != null) {
             send(via, StateFrames.tableRequest(owner));
           }
+        }, owner -> {
+          Topology.LinkState s = topology.state(owner);
+          if (s != null) {
+            flood(StateFrames.links(s), null); // neighbours linked meanwhile were not given it
+          }
         }, STATE_GRACE_NANOS);
   }
 
@@ -111,7 +116,7 @@ final class Replication {
       send(link, Digest.frame(topology.states(), registry.localTable(), tables.known()));
       return;
     }
-    for (Topology.LinkState s : topology.states()) {
+    for (Topology.LinkState s : topology.statesToShare()) {
       send(link, StateFrames.links(s));
     }
     send(link, StateFrames.table(tableCodec, registry.localTable()));
@@ -288,8 +293,9 @@ final class Replication {
           if (!unanswered.remove(from)) {
             throw new IOException("a second DIGEST, or one on a link without digests");
           }
-          for (byte[] frame : Digest.answer(payload, topology.states(), registry.localTable(),
-              tables.known(), tableCodec)) {
+          List<Topology.LinkState> states = topology.statesToShare();
+          for (byte[] frame : Digest.answer(payload, states, registry.localTable(), tables.known(),
+              tableCodec)) {
             send(from, frame);
           }
           break;

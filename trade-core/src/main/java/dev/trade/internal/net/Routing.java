@@ -34,6 +34,7 @@ final class Routing {
   private final Consumer<UUID> unreachable;
   private final Replication.Scheduler scheduler;
   private final BiConsumer<UUID, String> askForTable;
+  private final Consumer<String> passOnAgain;
   private final long graceNanos;
   private volatile Map<UUID, UUID> nextHops = Map.of();
   /** The routes {@link #nextHops} and the registry follow (the last computed). */
@@ -48,11 +49,13 @@ final class Routing {
   /**
    * @param unreachable told of each container that was reachable and is not any more
    * @param askForTable asks the neighbour (first argument) for the table of a container (second)
+   * @param passOnAgain floods the state of a container reachable again after it was lost (see
+   *     {@link Topology#statesToShare})
    * @param graceNanos how long states and tables of unreachable containers are kept
    */
   Routing(Topology topology, Tables tables, Registry registry, FloodFilter filter,
       RemoteCalls calls, Consumer<UUID> unreachable, Replication.Scheduler scheduler,
-      BiConsumer<UUID, String> askForTable, long graceNanos) {
+      BiConsumer<UUID, String> askForTable, Consumer<String> passOnAgain, long graceNanos) {
     this.topology = topology;
     this.tables = tables;
     this.registry = registry;
@@ -61,6 +64,7 @@ final class Routing {
     this.unreachable = unreachable;
     this.scheduler = scheduler;
     this.askForTable = askForTable;
+    this.passOnAgain = passOnAgain;
     this.graceNanos = graceNanos;
   }
 
@@ -123,6 +127,7 @@ final class Routing {
     Map<UUID, UUID> before = nextHops;
     nextHops = Map.copyOf(hops);
     tables.follow(routes, moved, now);
+    topology.takeRegained().forEach(passOnAgain);
     List<String> known = registry.remoteContainers();
     for (UUID gone : before.keySet()) {
       if (!hops.containsKey(gone)) {

@@ -1,8 +1,10 @@
 package dev.trade.internal.net;
 
+import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collections;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -47,6 +49,10 @@ final class Topology {
   /** The version of each state in {@link #states}, for {@link #isStale} on other threads. */
   private final Map<String, Long> versions = new ConcurrentHashMap<>();
   private final Map<String, Long> unreachableSince = new HashMap<>();
+  /** Containers that were reachable and are not now: what is known of them may be stale. */
+  private final Set<String> lost = new HashSet<>();
+  /** Lost containers reachable again since {@link #takeRegained} was last called. */
+  private final List<String> regained = new ArrayList<>();
   /** Containers that just became unreachable: their state version then, and until when it holds. */
   private final Map<String, long[]> holdDown = new HashMap<>();
   private final long holdDownNanos;
@@ -107,9 +113,44 @@ final class Topology {
     graph.put(s.owner(), s.neighbours());
   }
 
-  /** Every known state (to send to a new neighbour). */
+  /** Every known state (for this container's own digest). */
   List<LinkState> states() {
     return List.copyOf(states.values());
+  }
+
+  /**
+   * The states to give a new neighbour: all but those of containers this one lost (was routing
+   * to, and is not now). Those may be stale: when a container dies and splits the system in two,
+   * each side keeps its last state of the other side, which still lists the dead one, and a
+   * successor linking both sides would route to the dead container through them. Whoever reaches
+   * a lost container gives its state instead, and this container passes it on again once it
+   * reaches it again ({@link #takeRegained}).
+   */
+  List<LinkState> statesToShare() {
+    fresh();
+    List<LinkState> result = new ArrayList<>(states.size());
+    for (LinkState s : states.values()) {
+      if (!lost.contains(s.owner())) {
+        result.add(s);
+      }
+    }
+    return result;
+  }
+
+  /** The containers lost and reachable again since the last call, whose states to pass on again. */
+  List<String> takeRegained() {
+    fresh();
+    if (regained.isEmpty()) {
+      return List.of();
+    }
+    List<String> result = List.copyOf(regained);
+    regained.clear();
+    return result;
+  }
+
+  /** The state of {@code owner}, or null. */
+  LinkState state(String owner) {
+    return states.get(owner);
   }
 
   /** The route to {@code container}, or null when it is not reachable. */
@@ -149,6 +190,7 @@ final class Topology {
     }
     unreachableSince.entrySet().removeIf(e -> {
       if (nowNanos - e.getValue() > graceNanos) {
+        lost.remove(e.getKey());
         states.remove(e.getKey());
         versions.remove(e.getKey());
         graph.remove(e.getKey());
@@ -207,8 +249,14 @@ final class Topology {
     }
     routes = Collections.unmodifiableMap(result);
     holdDown.keySet().removeAll(result.keySet()); // a direct link proves it alive
+    for (String reached : result.keySet()) {
+      if (lost.remove(reached)) {
+        regained.add(reached);
+      }
+    }
     for (String gone : before.keySet()) {
       if (!result.containsKey(gone)) {
+        lost.add(gone);
         LinkState s = states.get(gone);
         holdDown.put(gone, new long[] {s == null ? Long.MAX_VALUE : s.version(), now + holdDownNanos});
       }

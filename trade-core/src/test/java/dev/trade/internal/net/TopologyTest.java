@@ -6,6 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.HashSet;
+import java.util.List;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
@@ -34,6 +36,37 @@ class TopologyTest {
     assertEquals(new Topology.Route("a", 2), t.route("b"));
     t.apply(new Topology.LinkState("c", 1, Set.of()));
     assertNull(t.route("c"), "c does not list b: only this container's own links count one-sided");
+  }
+
+  private static Set<String> owners(List<Topology.LinkState> states) {
+    Set<String> owners = new HashSet<>();
+    states.forEach(s -> owners.add(s.owner()));
+    return owners;
+  }
+
+  /**
+   * c dies, and a no longer reaches b: a's last state of b still lists c. A new neighbour of a is
+   * not given the states of containers a lost (a container that restarted after c would reach c
+   * through them), and a passes a lost container's state on again once it reaches it again.
+   */
+  @Test
+  void statesOfLostContainersAreNotSharedUntilTheyAreReachableAgain() {
+    Topology t = new Topology("a", LONG);
+    t.setOwnNeighbours(Set.of("c"));
+    t.apply(new Topology.LinkState("c", 1, Set.of("a", "b")));
+    t.apply(new Topology.LinkState("b", 1, Set.of("c")));
+    t.apply(new Topology.LinkState("far", 1, Set.of("x"))); // never reached: news, shared
+    assertEquals(new Topology.Route("c", 2), t.route("b"));
+    assertEquals(Set.of("a", "b", "c", "far"), owners(t.statesToShare()));
+    t.setOwnNeighbours(Set.of()); // c died
+    assertNull(t.route("b"));
+    assertEquals(Set.of("a", "far"), owners(t.statesToShare()), "b and c are lost");
+    assertEquals(Set.of("a", "b", "c", "far"), owners(t.states()), "still known, for a's own digest");
+    assertEquals(List.of(), t.takeRegained());
+    t.setOwnNeighbours(Set.of("b")); // a new link to b
+    assertEquals(List.of("b"), t.takeRegained(), "b's state is to be passed on again");
+    assertEquals(List.of(), t.takeRegained(), "once");
+    assertEquals(Set.of("a", "b", "far"), owners(t.statesToShare()));
   }
 
   /** Link readers drop the copies a flood brings by this check; a pruned state counts as unknown. */
