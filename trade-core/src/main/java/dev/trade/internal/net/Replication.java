@@ -86,8 +86,8 @@ final class Replication {
           }
         }, owner -> {
           Topology.LinkState s = topology.state(owner);
-          if (s != null) {
-            flood(StateFrames.links(s), null); // neighbours linked meanwhile were not given it
+          if (s != null) { // neighbours linked while it was lost were not given it
+            passOn(s, StateFrames.links(s), null);
           }
         }, STATE_GRACE_NANOS);
   }
@@ -225,20 +225,9 @@ final class Replication {
           for (int i = 0; i < n; i++) {
             neighbours.add(in.readText(MAX_TEXT));
           }
-          if (topology.apply(new Topology.LinkState(owner, version, neighbours))) {
-            // The owner sent this state itself to every neighbour it lists (it floods each new
-            // version over exactly those links, and gives all states to a link that comes up
-            // later): passing it to them again only multiplies frames. In a full mesh that was
-            // n - 2 copies per receiver, n^2 frames per link change. Nor is it passed to those
-            // that sent this version here too, or when a newer one waits (FloodFilter.hasCopy).
-            byte[] frame = StateFrames.wrap(Wire.LINKS, payload);
-            for (Link l : links.values()) {
-              String peer = l.peerKey;
-              if (l != from && !peer.equals(owner) && !neighbours.contains(peer)
-                  && !unanswered.contains(l) && !filter.hasCopy(l, owner, version)) {
-                send(l, frame);
-              }
-            }
+          Topology.LinkState state = new Topology.LinkState(owner, version, neighbours);
+          if (topology.apply(state)) {
+            passOn(state, StateFrames.wrap(Wire.LINKS, payload), from);
             routing.changedSoon();
           }
           break;
@@ -310,6 +299,24 @@ final class Replication {
 
   private static ClassLoader loader() {
     return Replication.class.getClassLoader();
+  }
+
+  /**
+   * Passes another container's link state on, as {@code frame}, to the links that may lack it:
+   * not {@code from}, not the owner, not the neighbours it lists (the owner sent it to them itself:
+   * it floods each new version over exactly those links, and gives all states to a link that comes
+   * up later; in a full mesh passing it to them again was n - 2 copies per receiver, n^2 frames per
+   * link change), nor to those that sent this version here too, or when a newer one waits
+   * ({@link FloodFilter#hasCopy}).
+   */
+  private void passOn(Topology.LinkState state, byte[] frame, Link from) {
+    for (Link l : links.values()) {
+      String peer = l.peerKey;
+      if (l != from && !peer.equals(state.owner()) && !state.neighbours().contains(peer)
+          && !unanswered.contains(l) && !filter.hasCopy(l, state.owner(), state.version())) {
+        send(l, frame);
+      }
+    }
   }
 
   private void flood(byte[] frame, Link except) {
