@@ -110,6 +110,7 @@ final class Routing {
       filter.pruned();
       ids.keySet().retainAll(routes.keySet());
     }
+    refreshAtNextHoldDownEnd();
     if (routes == routed) {
       return; // the same routes as computed last time: nothing follows
     }
@@ -135,15 +136,6 @@ final class Routing {
         unreachable.accept(gone);
       }
     }
-    long end = topology.nextHoldDownEnd();
-    if (end != 0 && (refreshAt == 0 || end - refreshAt < 0)) {
-      refreshAt = end;
-      scheduler.schedule(() -> {
-        refreshAt = 0;
-        topology.refresh();
-        follow();
-      }, Math.max(0, end - System.nanoTime()));
-    }
     // A container that became reachable but whose table we lack (it travelled another way, or was
     // pruned while the path was down): ask the next hop for it. Not a new neighbour, reachable from
     // its link's first moment on: its table comes in the link-up exchange.
@@ -152,6 +144,24 @@ final class Routing {
           && !h.getValue().equals(h.getKey())) {
         askForTable.accept(h.getValue(), h.getKey().toString());
       }
+    }
+  }
+
+  /**
+   * Computes routes again when the next hold-down ends: it may make a container reachable that no
+   * new state will (its own did not change). Asked at every computation, also when the routes did
+   * not change: of two hold-downs, the end of the first may change nothing, and the second would
+   * then keep its container unreachable until some state changed, in a quiet system for good.
+   */
+  private void refreshAtNextHoldDownEnd() {
+    long end = topology.nextHoldDownEnd();
+    if (end != 0 && (refreshAt == 0 || end - refreshAt < 0)) {
+      refreshAt = end;
+      scheduler.schedule(() -> {
+        refreshAt = 0;
+        topology.refresh();
+        follow();
+      }, Math.max(0, end - System.nanoTime()));
     }
   }
 
