@@ -54,7 +54,8 @@ final class Scale {
       for (int k = 0; k < counts.size(); k++) {
         String heap = k == 0 ? "-Xmx16m" : "-Xmx1g";
         List<String> options = new ArrayList<>(List.of(heap, "-Xss512k",
-            "-Dbench.progress=" + Boolean.getBoolean("bench.progress")));
+            "-Dbench.progress=" + Boolean.getBoolean("bench.progress"),
+            "-Dbench.startTogether=" + Boolean.getBoolean("bench.startTogether")));
         // For profiling the first big JVM: -Dbench.nodeOptions=-XX:StartFlightRecording=filename=x.jfr
         String extra = System.getProperty("bench.nodeOptions", "");
         if (k == 1 && !extra.isBlank()) {

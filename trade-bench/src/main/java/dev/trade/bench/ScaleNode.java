@@ -11,6 +11,10 @@ import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
 
 /**
  * One JVM of the scale benchmark: on {@code GO} it builds {@code count} containers one after the
@@ -25,6 +29,9 @@ import java.util.List;
  * each container took to build and register, and once a second until convergence how many
  * services its least and its best informed containers see, and which is the least informed and
  * how many links it has.
+ *
+ * <p>With {@code -Dbench.startTogether=true} it builds its containers all at once, each on a thread
+ * of its own, as a launcher starting a whole system does (not part of the published figures).
  *
  * <p>Arguments: system id, broadcast port, count, total, name prefix.
  */
@@ -85,7 +92,10 @@ public final class ScaleNode {
     List<TRADEContainer> containers = new ArrayList<>();
     boolean progress = Boolean.getBoolean("bench.progress");
     long go = System.nanoTime();
-    for (int i = 0; i < count; i++) {
+    if (Boolean.getBoolean("bench.startTogether")) {
+      containers.addAll(buildTogether(sysId, port, count, prefix));
+    }
+    for (int i = containers.size(); i < count; i++) {
       long t0 = System.nanoTime();
       TRADEContainer c = Lifecycle.discovering(TRADEContainer.builder().name(prefix + i), sysId, port)
           .build();
@@ -176,6 +186,30 @@ public final class ScaleNode {
       c.close();
     }
     System.exit(0);
+  }
+
+  private static List<TRADEContainer> buildTogether(String sysId, String port, int count,
+      String prefix) throws InterruptedException, ExecutionException {
+    ExecutorService pool = Executors.newFixedThreadPool(count);
+    try {
+      List<Future<TRADEContainer>> building = new ArrayList<>();
+      for (int i = 0; i < count; i++) {
+        String name = prefix + i;
+        building.add(pool.submit(() -> {
+          TRADEContainer c = Lifecycle.discovering(TRADEContainer.builder().name(name), sysId, port)
+              .build();
+          c.registerAllServices(new Probe());
+          return c;
+        }));
+      }
+      List<TRADEContainer> built = new ArrayList<>();
+      for (Future<TRADEContainer> f : building) {
+        built.add(f.get());
+      }
+      return built;
+    } finally {
+      pool.shutdown();
+    }
   }
 
   private static long usedHeapAfterGc() throws InterruptedException {
