@@ -87,8 +87,9 @@ public final class ScaleNode {
     if (!"GO".equals(in.readLine())) {
       return;
     }
-    // One after the other: started all at once, 25 containers per JVM on 2 cores left some of them
-    // without any other container's service after a minute (see docs/benchmarks.md).
+    // One after the other unless told otherwise, as the published figures were always measured:
+    // started all at once, 25 containers per JVM on 2 cores once left some of them without any
+    // other container's service after a minute (see docs/benchmarks.md, "Started together").
     List<TRADEContainer> containers = new ArrayList<>();
     boolean progress = Boolean.getBoolean("bench.progress");
     long go = System.nanoTime();
