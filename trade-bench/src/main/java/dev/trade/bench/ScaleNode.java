@@ -10,6 +10,7 @@ import java.lang.management.ManagementFactory;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.Collection;
+import java.util.Iterator;
 import java.util.List;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
@@ -113,16 +114,26 @@ public final class ScaleNode {
     long until = System.nanoTime() + 60_000_000_000L;
     boolean converged = false;
     long report = System.nanoTime();
+    // Containers not yet seen with every service, in order: each poll asks them up to the first
+    // that lacks some, and all containers once none is left. Asking from the first container at
+    // every poll, as before, was 6 % of a scale JVM's allocation (whose collections pause all 25
+    // containers) once the first ones had converged.
+    List<TRADEContainer> pending = new ArrayList<>(containers);
     while (System.nanoTime() < until) {
-      converged = true;
-      for (TRADEContainer c : containers) {
-        if (c.getAvailableServices(probe).size() < total) {
-          converged = false;
+      Iterator<TRADEContainer> it = pending.iterator();
+      while (it.hasNext() && it.next().getAvailableServices(probe).size() >= total) {
+        it.remove();
+      }
+      if (pending.isEmpty()) {
+        for (TRADEContainer c : containers) {
+          if (c.getAvailableServices(probe).size() < total) {
+            pending.add(c);
+          }
+        }
+        converged = pending.isEmpty();
+        if (converged) {
           break;
         }
-      }
-      if (converged) {
-        break;
       }
       if (progress && System.nanoTime() - report >= 1_000_000_000L) {
         report = System.nanoTime();
