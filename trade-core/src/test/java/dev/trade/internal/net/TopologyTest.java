@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.HashSet;
@@ -36,6 +37,25 @@ class TopologyTest {
     assertEquals(new Topology.Route("a", 2), t.route("b"));
     t.apply(new Topology.LinkState("c", 1, Set.of()));
     assertNull(t.route("c"), "c does not list b: only this container's own links count one-sided");
+  }
+
+  @Test
+  void statesShareOneInstanceOfEachId() {
+    Topology t = new Topology("me", LONG);
+    // As read from frames: equal ids, each a string of its own.
+    t.apply(new Topology.LinkState(new String("a"), 1, Set.of(new String("me"), new String("c"))));
+    t.apply(new Topology.LinkState(new String("b"), 1, Set.of(new String("c"), new String("a"))));
+    t.apply(new Topology.LinkState(new String("a"), 2, Set.of(new String("b"), new String("c"))));
+    Topology.LinkState a = t.state("a");
+    Topology.LinkState b = t.state("b");
+    assertSame(idIn(a.neighbours(), "c"), idIn(b.neighbours(), "c"));
+    assertSame(a.owner(), idIn(b.neighbours(), "a"));
+    assertSame(b.owner(), idIn(a.neighbours(), "b"));
+    assertEquals(Set.of("b", "c"), a.neighbours());
+  }
+
+  private static String idIn(Set<String> ids, String id) {
+    return ids.stream().filter(id::equals).findFirst().orElseThrow();
   }
 
   private static Set<String> owners(List<Topology.LinkState> states) {
