@@ -12,6 +12,7 @@ import java.net.InetSocketAddress;
 import java.net.NetworkInterface;
 import java.net.SocketException;
 import java.util.ArrayList;
+import java.util.Collection;
 import java.util.Collections;
 import java.util.HashSet;
 import java.util.List;
@@ -245,7 +246,7 @@ final class Finder implements AutoCloseable {
       return; // a dial is under way
     }
     dialling.put(peer, now);
-    if (Network.compareIds(self, peer) < 0 || !Overlay.chooses(peer, self, known.keySet())) {
+    if (dialsAtOnce(self, peer, known.keySet())) {
       dial(peer);
     } else {
       later(() -> {
@@ -254,6 +255,23 @@ final class Finder implements AutoCloseable {
         }
       }, SECOND_SIDE_DELAY_MS);
     }
+  }
+
+  /**
+   * Whether {@code self}, knowing {@code known} (itself not among them), dials {@code peer} at once:
+   * when it has the smaller id, or when by its view of the membership the peer does not choose it
+   * back. The peer's choice is computed with {@code self} among the members: without it, the peer
+   * never seemed to choose this container, both dialled at once, and one of the two links was then
+   * closed as a duplicate, at times before the other side had the link that stays (a spurious
+   * "left" and "joined").
+   */
+  static boolean dialsAtOnce(UUID self, UUID peer, Collection<UUID> known) {
+    if (Network.compareIds(self, peer) < 0) {
+      return true;
+    }
+    Set<UUID> members = new HashSet<>(known);
+    members.add(self);
+    return !Overlay.chooses(peer, self, members);
   }
 
   private void dial(UUID peer) {
