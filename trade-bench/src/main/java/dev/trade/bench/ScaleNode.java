@@ -99,8 +99,7 @@ public final class ScaleNode {
     }
     for (int i = containers.size(); i < count; i++) {
       long t0 = System.nanoTime();
-      TRADEContainer c = Lifecycle.discovering(TRADEContainer.builder().name(prefix + i), sysId, port)
-          .build();
+      TRADEContainer c = build(sysId, port, prefix + i);
       long t1 = System.nanoTime();
       c.registerAllServices(new Probe());
       containers.add(c);
@@ -200,6 +199,11 @@ public final class ScaleNode {
     System.exit(0);
   }
 
+  /** A container of the system {@code sysId}, discovering on loopback at {@code port}. */
+  private static TRADEContainer build(String sysId, String port, String name) {
+    return Lifecycle.discovering(TRADEContainer.builder().name(name), sysId, port).build();
+  }
+
   private static List<TRADEContainer> buildTogether(String sysId, String port, int count,
       String prefix) throws InterruptedException, ExecutionException {
     ExecutorService pool = Executors.newFixedThreadPool(count);
@@ -208,8 +212,7 @@ public final class ScaleNode {
       for (int i = 0; i < count; i++) {
         String name = prefix + i;
         building.add(pool.submit(() -> {
-          TRADEContainer c = Lifecycle.discovering(TRADEContainer.builder().name(name), sysId, port)
-              .build();
+          TRADEContainer c = build(sysId, port, name);
           c.registerAllServices(new Probe());
           return c;
         }));
