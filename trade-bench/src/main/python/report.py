@@ -224,17 +224,21 @@ def main():
           "its containers until the last one has registered its service. *Converged*: from that same "
           "moment until every container lists every container's service. *Heap per container*: "
           "heap in use after full GCs with the containers running, minus the same JVM's heap before "
-          "building them, divided by their number.\n")
+          "building them, divided by their number. *CPU*: the CPU time all JVMs used from that same "
+          "moment until the last one converged (all threads, JIT compilers and collectors "
+          "included): the work converging took, which a busy machine stretches less than it "
+          "stretches the wall-clock time.\n")
         w("Each size runs several times, each time a new system of new JVMs; the goal is judged on the "
           "median.\n")
-        w("| containers | run | JVMs | all built after | converged after | heap per container | the -Xmx16m JVM: its container / whole heap | threads (all JVMs) | links per container: mean / most |")
-        w("|---|---|---|---|---|---|---|---|---|")
+        w("| containers | run | JVMs | all built after | converged after | heap per container | the -Xmx16m JVM: its container / whole heap | CPU (all JVMs) | threads (all JVMs) | links per container: mean / most |")
+        w("|---|---|---|---|---|---|---|---|---|---|")
         for n, run, s in ((n, k + 1, s) for n in sorted(sizes) for k, s in enumerate(sizes[n])):
             conv = f"{s['convergence_ms'] / 1000:.2f} s" if s.get("converged") else "**not within 60 s**"
             mb = lambda v: "–" if v is None else f"{v:.2f}"
             built = "–" if s.get("all_built_ms") is None else f"{s['all_built_ms'] / 1000:.2f} s"
+            cpu = "–" if s.get("cpu_seconds") is None else f"{s['cpu_seconds']:.1f} s"
             w(f"| {n} | {run} | {s['jvms']} | {built} | {conv} | {mb(s['heap_per_container_mb'])} MB | "
-              f"{mb(s['single_container_jvm_xmx16m_heap_mb'])} / {mb(s['single_container_jvm_total_heap_mb'])} MB | {s['threads_total']} | "
+              f"{mb(s['single_container_jvm_xmx16m_heap_mb'])} / {mb(s['single_container_jvm_total_heap_mb'])} MB | {cpu} | {s['threads_total']} | "
               f"{s.get('links_per_container', '–')} / {s.get('most_links', '–')} |")
         w("")
     failed = [s for runs in sizes.values() for s in runs if s.get("problems")]

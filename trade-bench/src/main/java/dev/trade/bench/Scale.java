@@ -100,7 +100,7 @@ final class Scale {
           jvms.get(k).send("HEAP");
           String[] h = jvms.get(k).await("HEAP", 60_000).split(" ");
           heaps.add(new long[] {Long.parseLong(h[0]), Long.parseLong(h[1]), Long.parseLong(h[2]),
-              Long.parseLong(h[3]), Long.parseLong(h[4])});
+              Long.parseLong(h[3]), Long.parseLong(h[4]), Long.parseLong(h[5])});
         } catch (IOException e) {
           heaps.add(null);
           problems.append("JVM ").append(k).append(" (").append(counts.get(k))
@@ -113,11 +113,13 @@ final class Scale {
       long threads = 0;
       long links = 0;
       long mostLinks = 0;
+      long cpuMillis = 0;
       for (int k = 0; k < jvms.size(); k++) {
         long[] h = heaps.get(k);
         if (h != null) {
           threads += h[2];
           links += h[3];
+          cpuMillis += h[5];
           mostLinks = Math.max(mostLinks, h[4]);
           if (k > 0) {
             bigHeap += h[1] - h[0];
@@ -141,6 +143,9 @@ final class Scale {
       // The links a container holds, on average: each link counts at both of its ends.
       json.field("links_per_container", Math.round(links * 10.0 / n) / 10.0);
       json.field("most_links", mostLinks);
+      // All JVMs' CPU time from GO until every one converged: the work converging took, which a
+      // busy machine stretches less than the wall-clock time.
+      json.field("cpu_seconds", Math.round(cpuMillis / 100.0) / 10.0);
       json.end();
       System.err.printf("scale %d: converged=%s in %.0f ms, heap/container %.2f MB, threads %d, links/container %.1f %s%n",
           n, converged, (last - go) / 1e3, bigCount == 0 ? -1 : bigHeap / (double) bigCount / 1e6, threads,

@@ -22,9 +22,10 @@ import java.util.concurrent.Future;
  * other (discovery on loopback), each registering one service, prints {@code BUILT <epoch-us>} when
  * all are, and {@code CONVERGED <epoch-us>} once every one of them sees all
  * {@code total} services of the system (or {@code TIMEOUT <seen...>} 60 s after they were built).
- * Then it prints {@code HEAP <baseline> <after> <threads> <links> <most links>}: heap in use after
- * full GCs before the containers were built and with them running, and the links its containers
- * hold, in all and the most one of them holds. Exits when standard input closes (at most 10 min).
+ * Then it prints {@code HEAP <baseline> <after> <threads> <links> <most links> <cpu ms>}: heap in
+ * use after full GCs before the containers were built and with them running, the links its
+ * containers hold, in all and the most one of them holds, and the CPU time this JVM used since GO
+ * (until asked, once every JVM converged). Exits when standard input closes (at most 10 min).
  *
  * <p>With {@code -Dbench.progress=true} it also writes to standard error (the JVM's log) how long
  * each container took to build and register, and once a second until convergence how many
@@ -46,6 +47,12 @@ public final class ScaleNode {
   }
 
   private ScaleNode() {}
+
+  /** CPU time of this whole JVM so far (all threads: JIT and GC included). */
+  private static long processCpuNanos() {
+    return ((com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean())
+        .getProcessCpuTime();
+  }
 
   /** The names {@code Scale} gives the containers of a system of {@code total}. */
   private static List<String> expectedNames(int total) {
@@ -94,6 +101,7 @@ public final class ScaleNode {
     List<TRADEContainer> containers = new ArrayList<>();
     boolean progress = Boolean.getBoolean("bench.progress");
     long go = System.nanoTime();
+    long goCpu = processCpuNanos();
     if (Boolean.getBoolean("bench.startTogether")) {
       containers.addAll(buildTogether(sysId, port, count, prefix));
     }
@@ -179,6 +187,7 @@ public final class ScaleNode {
     if (!"HEAP".equals(in.readLine())) {
       return;
     }
+    long cpu = processCpuNanos() - goCpu; // before the full collections below
     long after = usedHeapAfterGc();
     int links = 0;
     int mostLinks = 0;
@@ -188,7 +197,8 @@ public final class ScaleNode {
       mostLinks = Math.max(mostLinks, n);
     }
     System.out.println("HEAP " + baseline + " " + after + " "
-        + ManagementFactory.getThreadMXBean().getThreadCount() + " " + links + " " + mostLinks);
+        + ManagementFactory.getThreadMXBean().getThreadCount() + " " + links + " " + mostLinks
+        + " " + cpu / 1_000_000);
     System.out.flush();
     while (in.readLine() != null) {
       // Keep the containers up until the parent closes our input.
