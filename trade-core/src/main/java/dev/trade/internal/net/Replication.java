@@ -214,8 +214,8 @@ final class Replication {
         case Wire.LINKS: {
           String owner = in.readText(MAX_TEXT);
           long version = in.readLong();
-          if (topology.isStale(owner, version)) {
-            break; // a copy that came another way first: most frames of a flood are
+          if (topology.isStale(owner, version) || filter.superseded(type, owner, version)) {
+            break; // a copy that came another way first (most frames of a flood), or outdated
           }
           int n = in.readVarUInt();
           if (n > 65_536) {
@@ -235,7 +235,7 @@ final class Replication {
         case Wire.TABLE: {
           String owner = in.readText(MAX_TEXT);
           long version = in.readLong();
-          if (tables.isStale(owner, version)) {
+          if (tables.isStale(owner, version) || filter.superseded(type, owner, version)) {
             break; // not decoded
           }
           List<ServiceDescriptor> services = StateFrames.descriptors(tableCodec.read(in, loader()));

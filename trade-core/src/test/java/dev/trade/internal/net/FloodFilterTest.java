@@ -67,6 +67,21 @@ class FloodFilterTest {
   }
 
   @Test
+  void aVersionIsSupersededOnceANewerOneIsQueued() {
+    assertFalse(stale(A, Wire.LINKS, links("b", 1)));
+    assertFalse(filter.superseded(Wire.LINKS, "b", 1), "the newest queued");
+    assertFalse(stale(B, Wire.LINKS, links("b", 2)));
+    assertTrue(filter.superseded(Wire.LINKS, "b", 1));
+    assertFalse(filter.superseded(Wire.LINKS, "b", 2));
+    assertFalse(filter.superseded(Wire.TABLE, "b", 1), "link states and tables are apart");
+    assertFalse(filter.superseded(Wire.LINKS, "c", 1), "another owner");
+    assertFalse(stale(A, Wire.TABLE, table("b", 3)));
+    assertFalse(stale(B, Wire.TABLE, table("b", 4)));
+    assertTrue(filter.superseded(Wire.TABLE, "b", 3));
+    assertFalse(filter.superseded(Wire.TABLE, "b", 4));
+  }
+
+  @Test
   void aPrunedLinkStateMayComeAgain() {
     assertFalse(stale(A, Wire.LINKS, links("b", 1)));
     topology.apply(new Topology.LinkState("b", 1, Set.of("a")));

@@ -19,23 +19,27 @@ import java.util.UUID;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 
 /**
  * Which neighbours a container passes a link state on to: not the one it came from, not the
  * owner's neighbours (the owner sent it to them), and not those that sent the same version here
- * too, as most do while the control thread runs behind the links' readers.
+ * too, as most do while the control thread runs behind the links' readers; and which versions it
+ * skips (those a newer one queued behind outdates).
  */
 class FloodForwardingTest {
   private final UUID self = UUID.randomUUID();
   private final Codec codec = new Codec(AllowList.withDefaults(), Limits.DEFAULT, InfoBinding.NONE);
   private final ScheduledExecutorService timer = Executors.newSingleThreadScheduledExecutor();
   private final Map<UUID, Link> links = new ConcurrentHashMap<>();
+  /** Tasks the replication scheduled on the control thread: route computations above all. */
+  private final AtomicInteger scheduled = new AtomicInteger();
   private final LoopbackLinks loopback = new LoopbackLinks();
   private final Replication replication = new Replication(self, new Registry(self.toString(), "x", "host"),
       codec, links, new RemoteCalls(self, codec, container -> null, null, timer, 1 << 20),
-      60_000_000_000L, (task, delay) -> { }, container -> { });
+      60_000_000_000L, (task, delay) -> scheduled.incrementAndGet(), container -> { });
 
   @AfterEach
   void close() throws IOException {
@@ -49,6 +53,15 @@ class FloodForwardingTest {
     made[0] = loopback.link(UUID.randomUUID(), name, far);
     links.put(made[0].peerId, made[0]);
     return far[0];
+  }
+
+  /** Reads the next frame a neighbour got and asserts that it is {@code frame}. */
+  private static void assertSent(byte[] frame, InputStream at, String what) throws IOException {
+    DataInputStream in = new DataInputStream(at);
+    assertEquals(frame.length - 4, in.readInt(), what);
+    byte[] got = new byte[frame.length - 4];
+    in.readFully(got);
+    assertTrue(Arrays.equals(frame, 4, frame.length, got, 0, got.length), what);
   }
 
   @Test
@@ -69,12 +82,36 @@ class FloodForwardingTest {
     // the far end when the write returns.
     replication.received(a[0], Wire.LINKS, state);
     replication.flushQueued();
-    DataInputStream fromC = new DataInputStream(atC);
-    assertEquals(frame.length - 4, fromC.readInt(), "c had no copy and gets one");
-    byte[] got = new byte[frame.length - 4];
-    fromC.readFully(got);
-    assertEquals(Wire.LINKS, got[1]);
+    assertSent(frame, atC, "c had no copy and gets one");
     assertEquals(0, atB.available(), "b sent this version itself");
     assertEquals(0, atA.available(), "it came from a");
+  }
+
+  @Test
+  void aVersionThatANewerOneQueuedBehindSupersedesIsSkipped() throws Exception {
+    Link[] a = new Link[1];
+    Link[] b = new Link[1];
+    Link[] c = new Link[1];
+    link("a", a);
+    link("b", b);
+    InputStream atC = link("c", c);
+    String owner = UUID.randomUUID().toString();
+    byte[] first = StateFrames.links(new Topology.LinkState(owner, 1, Set.of("x")));
+    byte[] second = StateFrames.links(new Topology.LinkState(owner, 2, Set.of("x", "y")));
+    byte[] one = Arrays.copyOfRange(first, Wire.HEADER, first.length);
+    byte[] two = Arrays.copyOfRange(second, Wire.HEADER, second.length);
+    // Both versions queue for the control thread (a busy one), one after the other.
+    assertFalse(replication.isStale(a[0], Wire.LINKS, first, Wire.HEADER, one.length));
+    assertFalse(replication.isStale(b[0], Wire.LINKS, second, Wire.HEADER, two.length));
+    int before = scheduled.get();
+    replication.received(a[0], Wire.LINKS, one);
+    replication.flushQueued();
+    assertEquals(0, atC.available(), "version 1 is outdated by version 2, queued behind it");
+    assertEquals(before, scheduled.get(), "nor applied: no route computation for it");
+    replication.received(b[0], Wire.LINKS, two);
+    replication.flushQueued();
+    assertSent(second, atC, "c gets version 2");
+    assertEquals(0, atC.available(), "and nothing else");
+    assertEquals(before + 1, scheduled.get(), "version 2 is applied, and routes follow");
   }
 }
