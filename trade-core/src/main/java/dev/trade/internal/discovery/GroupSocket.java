@@ -18,6 +18,8 @@ import java.util.Iterator;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.LockSupport;
 
 /**
  * The socket that receives a multicast group's datagrams, and the one thread that reads it, shared
@@ -27,12 +29,17 @@ import java.util.concurrent.CopyOnWriteArrayList;
  * thread also reads each receiver's own sending sockets, where answers to its announcements
  * arrive, and hands those to that receiver alone.
  *
- * <p>Opened by the first {@link #join}, closed (socket and thread) by the last {@link #leave}.
- * Thread-safe.
+ * <p>Opened by the first {@link #join}, closed (socket and thread) by the last {@link #leave}, and
+ * only then: the receivers attached have no other ear. A receiver that fails on a datagram does
+ * not stop the others, and a socket that fails to receive is retried, ever more slowly (up to once
+ * a second), until it works again. Thread-safe.
  */
 final class GroupSocket {
   private static final Logger LOG = System.getLogger(Discovery.class.getName());
-  private static final int MAX_CONSECUTIVE_FAILURES = 10;
+  /** Consecutive receive failures after which they are logged as an error, not a warning. */
+  private static final int PERSISTENT_FAILURES = 10;
+  /** The longest pause between two attempts to receive while receiving keeps failing. */
+  private static final long MAX_PAUSE_NANOS = TimeUnit.SECONDS.toNanos(1);
   /** The open ones, by family, group, port and interfaces. Guarded by itself. */
   private static final Map<List<Object>, GroupSocket> OPEN = new HashMap<>();
 
@@ -153,6 +160,9 @@ final class GroupSocket {
               deliver(only, buf, from);
             }
           }
+          if (failures >= PERSISTENT_FAILURES) {
+            LOG.log(Level.INFO, "Discovery receives again on {0}", thread.getName());
+          }
           failures = 0;
         } catch (ClosedSelectorException e) {
           break;
@@ -162,18 +172,20 @@ final class GroupSocket {
           }
           // An answer channel closed by its owner between select and receive: its key goes.
         } catch (IOException | RuntimeException e) {
-          // Datagram receive errors are transient; stop only if they persist, rather than spin.
-          if (++failures >= MAX_CONSECUTIVE_FAILURES) {
-            LOG.log(Level.ERROR, "Discovery stops listening after " + failures + " failures", e);
-            break;
+          failures++;
+          if (failures == PERSISTENT_FAILURES) {
+            LOG.log(Level.ERROR, "Discovery has failed to receive " + failures
+                + " times in a row; it keeps trying, once a second at most", e);
+          } else if (failures < PERSISTENT_FAILURES) {
+            LOG.log(Level.WARNING, "Discovery could not receive; retrying", e);
           }
-          LOG.log(Level.WARNING, "Discovery could not receive; retrying", e);
+          pause(Math.min(MAX_PAUSE_NANOS,
+              TimeUnit.MILLISECONDS.toNanos(1) << Math.min(failures, 20)));
         }
       }
     } catch (IOException e) {
       // Closing the selector at the end: nothing is left to release.
     } finally {
-      // Ended by failures, not by the last receiver leaving: the next join opens a new one.
       synchronized (OPEN) {
         OPEN.remove(key, this);
         closed = true;
@@ -182,16 +194,35 @@ final class GroupSocket {
     }
   }
 
+  /** Waits {@code nanos}, or less if the last receiver leaves meanwhile. */
+  private void pause(long nanos) {
+    long until = System.nanoTime() + nanos;
+    for (long left = nanos; left > 0 && !closed; left = until - System.nanoTime()) {
+      LockSupport.parkNanos(this, Math.min(left, TimeUnit.MILLISECONDS.toNanos(50)));
+    }
+  }
+
   private void deliver(Receiver only, ByteBuffer buf, InetSocketAddress from) {
     byte[] packet = buf.array();
     int len = buf.position();
     if (only != null) {
-      only.received(packet, len, from, null);
+      deliver(only, packet, len, from, null);
       return;
     }
     Receiver.Decoded decoded = new Receiver.Decoded(); // shared by receivers of the same system
     for (Receiver r : receivers) {
+      deliver(r, packet, len, from, decoded);
+    }
+  }
+
+  /** Hands a datagram to one receiver; its failure is its own, not the others' nor the socket's. */
+  private static void deliver(Receiver r, byte[] packet, int len, InetSocketAddress from,
+      Receiver.Decoded decoded) {
+    try {
       r.received(packet, len, from, decoded);
+    } catch (RuntimeException e) {
+      LOG.log(Level.WARNING, "A discovery receiver failed on a datagram from " + from
+          + "; delivery goes on", e);
     }
   }
 }
