@@ -51,20 +51,24 @@ class OverlayTest {
 
   /** The largest number of hops from {@code from} to any container, or -1 if one is unreachable. */
   private static int eccentricity(Map<UUID, Set<UUID>> g, UUID from) {
+    Map<UUID, Integer> hops = hops(g, from);
+    return hops.size() == g.size() ? hops.values().stream().max(Integer::compare).orElse(0) : -1;
+  }
+
+  /** The links from {@code from} to every container it reaches, by shortest paths. */
+  private static Map<UUID, Integer> hops(Map<UUID, Set<UUID>> g, UUID from) {
     Map<UUID, Integer> hops = new HashMap<>(Map.of(from, 0));
     Queue<UUID> queue = new ArrayDeque<>(List.of(from));
-    int max = 0;
     while (!queue.isEmpty()) {
       UUID at = queue.poll();
       for (UUID n : g.get(at)) {
         if (!hops.containsKey(n)) {
           hops.put(n, hops.get(at) + 1);
-          max = Math.max(max, hops.get(n));
           queue.add(n);
         }
       }
     }
-    return hops.size() == g.size() ? max : -1;
+    return hops;
   }
 
   private static int log2Ceil(int n) {
@@ -110,10 +114,11 @@ class OverlayTest {
       int log = log2Ceil(n);
       int most = 0;
       for (UUID m : members) {
-        assertTrue(Overlay.chosen(m, members, Set.of()).size() <= log + 2, n + ": dials at most log2 n + 2");
+        assertTrue(Overlay.chosen(m, members, Set.of()).size() <= (log + 1) / 2 + 2,
+            n + ": dials at most log2 n / 2 + 2");
         most = Math.max(most, g.get(m).size());
       }
-      // About log2 n dialled and as many accepted; the ids' random spacing skews the accepted.
+      // About log2 n / 2 dialled and as many accepted; the ids' random spacing skews the accepted.
       assertTrue(most <= 4 * log, n + ": " + most + " links, more than 4 log2 n");
       // Diameter: every container reaches every other within log2 n hops (16 is the hop limit).
       for (UUID m : members.subList(0, Math.min(n, 50))) {
@@ -184,8 +189,17 @@ class OverlayTest {
       most = Math.max(most, links.size());
     }
     double mean = total / (double) n;
-    System.out.println("grown one by one: " + mean + " links on average, at most " + most);
-    assertTrue(mean <= 2 * (log2Ceil(n) + 2), mean + " links on average");
+    long pathSum = 0;
+    for (UUID m : members) {
+      pathSum += hops(g, m).values().stream().mapToInt(Integer::intValue).sum();
+    }
+    double meanPath = pathSum / (double) (n * (n - 1));
+    System.out.println("grown one by one: " + mean + " links on average, at most " + most
+        + "; paths of " + meanPath + " links on average");
+    // Fewer links make longer paths: half a link more on average than with a finger per interval.
+    assertTrue(meanPath <= 3, meanPath + " links on the average path");
+    // Each link is a thread at both ends, and each link change a state flooded over every link.
+    assertTrue(mean <= 2 * ((log2Ceil(n) + 1) / 2 + 2), mean + " links on average");
     assertTrue(most <= n / 2, most + " links");
   }
 
