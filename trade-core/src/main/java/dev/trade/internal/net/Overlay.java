@@ -21,9 +21,9 @@ import java.util.UUID;
  * and about as many accepted ones. Routes follow shortest paths over all links, dialled and
  * accepted, so paths stay short: containers joining one by one end up 1.7 hops apart on average
  * at 20 containers and 2.5 at 100 (at most 3 and 5), far below the hop limit of 16. A finger in
- * every interval took that to 1.5 and 2.1 hops, but with 100 containers (100-container scale
- * runs) it gave each about 18.5 links instead of 14.4, and converging took 16 % more CPU: each
- * link is a thread, and each link change a new state flooded over every link. The successor links
+ * every interval took that to 1.5 and 2.1 hops, but in the scale benchmark's 100-container runs
+ * it gave each container about 18.5 links instead of 14.4, and converging took 16 % more CPU:
+ * each link is a thread, and each link change a new state flooded over every link. The successor links
  * alone make a ring through every container a container knows, so the links stay connected while
  * views of the membership differ for a moment.
  *
