@@ -104,8 +104,7 @@ final class FloodFilter {
    * time it is applied: each version reached a container of 100 about 11 times, once per link.
    */
   boolean hasCopy(Object link, String owner, long version) {
-    Long queued = queuedLinks.get(owner);
-    if (queued != null && queued > version) {
+    if (superseded(Wire.LINKS, owner, version)) {
       return true;
     }
     Holders h = holders.get(owner);
