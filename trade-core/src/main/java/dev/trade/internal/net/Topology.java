@@ -114,11 +114,13 @@ final class Topology {
    * pauses in the first 25 s from about 4.6 s to 1.8–3.0 s.
    */
   private LinkState shared(LinkState s) {
-    Set<String> neighbours = new HashSet<>();
+    String[] neighbours = new String[s.neighbours().size()];
+    int i = 0;
     for (String n : s.neighbours()) {
-      neighbours.add(graph.name(graph.node(n)));
+      neighbours[i++] = graph.name(graph.node(n));
     }
-    return new LinkState(graph.name(graph.node(s.owner())), s.version(), neighbours);
+    // Distinct ids of a set: Set.of takes them, and the state keeps that set without a copy.
+    return new LinkState(graph.name(graph.node(s.owner())), s.version(), Set.of(neighbours));
   }
 
   private void put(LinkState s) {
