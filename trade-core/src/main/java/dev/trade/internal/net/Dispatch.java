@@ -8,7 +8,7 @@ import java.io.IOException;
  * (copies that are already stale are dropped here, before they queue), heartbeats only count as
  * life. Safe for concurrent use.
  */
-final class Dispatch implements Link.Handler {
+final class Dispatch implements LinkHandler {
   /** Why a link closed when its peer said GOODBYE: an orderly close. */
   static final String GOODBYE = "said goodbye";
 

@@ -1,55 +1,35 @@
 package dev.trade.internal.net;
 
 import java.io.BufferedOutputStream;
-import java.io.DataInputStream;
-import java.io.EOFException;
 import java.io.IOException;
-import java.io.OutputStream;
 import java.net.Socket;
-import java.security.GeneralSecurityException;
-import java.util.Arrays;
-import java.util.Queue;
 import java.util.UUID;
-import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
 
 /**
  * One authenticated connection to a neighbouring container.
  *
- * <p><b>Writing</b> combines frames: a sender that finds the socket idle writes its frame itself
- * (no thread hand-off on the latency path); senders that arrive while a write is in progress only
- * queue their frame, and the writing thread drains the queue before it flushes, so concurrent calls
- * share system calls. <b>Reading</b> happens on one thread at a time, which hands each frame to the
- * {@link Handler}. The handler serves a call on that thread ({@link #serveHere}); a {@link ReadWatch}
- * moves reading to another thread when a call takes longer than a tick. Frames the reading thread
- * sends while the next frame is already buffered (replies to a burst of calls) wait until it has
- * served that burst, and then leave with one system call.
+ * <p><b>Writing</b> combines frames ({@link LinkOutput}). <b>Reading</b> happens on one thread at a
+ * time, which hands each frame to the {@link LinkHandler}. The handler serves a call on that thread
+ * ({@link #serveHere}); a {@link ReadWatch} moves reading to another thread when a call takes
+ * longer than a tick. Frames the reading thread sends while the next frame is already buffered
+ * (replies to a burst of calls) wait until it has served that burst, and then leave with one
+ * system call.
  *
  * <p>This class is safe for concurrent use.
  */
 final class Link {
   private static final int BUFFER = 8 * 1024;
-  /** Receives what a link reads; called on the thread that is reading the link. */
-  interface Handler {
-    /** @return true to go on reading on this thread, false if reading went on in another one */
-    boolean frame(Link link, int type, byte[] payload) throws IOException;
-
-    /**
-     * Whether a frame is a copy of something this container has: then it is dropped, not handed
-     * to {@link #frame}. Asked once per frame, before {@code frame}; the payload is {@code len}
-     * bytes of {@code buf} from {@code off}, often the link's input buffer, valid only during
-     * the call.
-     */
-    default boolean isStale(Link link, int type, byte[] buf, int off, int len) {
-      return false;
-    }
-
-    void closed(Link link, String reason);
-  }
 
   /** The link whose call the current thread serves on that link's reading thread, if any. */
   private static final ThreadLocal<Link> SERVING = new ThreadLocal<>();
+  /**
+   * What the read steps answer when reading went on in another thread; compared by identity, so
+   * that no reason why a link ends can be taken for it.
+   */
+  @SuppressWarnings("StringOperationCanBeSimplified")
+  private static final String MOVED = new String("reading moved");
 
   final UUID peerId;
   /** {@link #peerId} as text, as link states and tables name containers. */
@@ -59,26 +39,15 @@ final class Link {
   /** Whether both sides exchange DIGEST, not their full state, when the link comes up. */
   final boolean digests;
   private final Socket socket;
-  private final DataInputStream in;
   private final LinkInput input;
-  private final OutputStream out;
-  private final int maxFrame;
-  private final FrameCipher cipher;
-  private final Queue<byte[]> queue = new ConcurrentLinkedQueue<>();
-  private final AtomicBoolean writing = new AtomicBoolean();
+  private final LinkOutput output;
   private final AtomicBoolean closed = new AtomicBoolean();
   /** Why the link was closed, by whoever closed it first; null while it is open. */
   private volatile String closeReason;
   // Set when the link is to close once the queued frames are written.
   private volatile String closeWhenDrained;
-  /** Whether the reading thread is handing out frames read together with more; see send. */
-  private volatile boolean burst;
-  /** Whether a frame was sent, and perhaps left for the end of a burst, since the last look. */
-  private volatile boolean deferred;
-  private Handler handler;
+  private LinkHandler handler;
   private ReadWatch watch;
-  // The thread in the read loop; null while reading moves to another one.
-  private volatile Thread reader;
   // Odd while the reading thread serves a call; each call and each hand-off counts one up, so a
   // stale value never matches a later call.
   private final AtomicLong work = new AtomicLong();
@@ -102,19 +71,19 @@ final class Link {
     this.peerName = peer.name();
     this.initiatedHere = initiatedHere;
     this.digests = peer.digests();
-    this.maxFrame = maxFrame;
-    this.cipher = peer.cipher();
+    FrameCipher cipher = peer.cipher();
     // Small buffers: a container keeps one link per neighbour, and with 100 containers on a host
     // 2 x 64 KB per link was 12.7 MB of heap per container. Frames larger than a buffer bypass it
     // (BufferedInput/OutputStream read and write those directly), and 8 KB still coalesces about
     // a hundred small call frames per system call.
-    this.input = new LinkInput(socket.getInputStream(), BUFFER);
-    this.in = new DataInputStream(input);
-    this.out = new BufferedOutputStream(socket.getOutputStream(), BUFFER);
+    this.input = new LinkInput(socket.getInputStream(), BUFFER, peerName, maxFrame, cipher,
+        (type, buf, off, len) -> handler.isStale(this, type, buf, off, len), arrived);
+    this.output = new LinkOutput(new BufferedOutputStream(socket.getOutputStream(), BUFFER), cipher,
+        () -> lastSent = System.nanoTime());
   }
 
   /** Starts reading on a thread of its own; {@code watch} keeps the link read while calls are served. */
-  void start(Handler handler, ReadWatch watch) {
+  void start(LinkHandler handler, ReadWatch watch) {
     this.handler = handler;
     this.watch = watch;
     Thread t = new Thread(this::readLoop, "trade-reader-" + peerName);
@@ -182,7 +151,6 @@ final class Link {
   /** Moves reading to another thread if {@code stamp} is still the call being served. */
   private void handOff(long stamp) {
     if ((stamp & 1) == 1 && work.compareAndSet(stamp, stamp + 1)) {
-      reader = null;
       if (!watch.read(this::readLoop)) {
         close("container closing");
       }
@@ -197,15 +165,9 @@ final class Link {
    */
   void send(byte[] frame) throws IOException {
     queue(frame);
-    deferred = true; // before looking at burst, see endBurst
-    if (burst) {
-      // The reading thread hands out frames read together (calls to serve here, or replies that
-      // wake callers who call again at once): it writes what they send, in one system call,
-      // before it reads again. Whoever reads after it sees the same, as a burst ends before then.
-      return;
+    if (!output.leftForBurst()) {
+      writeQueued();
     }
-    deferred = false;
-    writeQueued();
   }
 
   /**
@@ -219,7 +181,7 @@ final class Link {
     if (closed.get()) {
       throw new IOException("link to " + peerName + " is closed");
     }
-    queue.offer(frame);
+    output.offer(frame);
   }
 
   /** Writes what {@link #queue} queued, unless another thread is writing: that one writes it. */
@@ -236,11 +198,9 @@ final class Link {
    * @return true if this thread still reads the link
    */
   private boolean endBurst() {
-    burst = false; // before looking at deferred: a sender that saw burst true set it before this
-    if (!deferred) {
-      return true; // what others queued (the control thread's floods) they write themselves
+    if (!output.endBurst()) {
+      return true;
     }
-    deferred = false;
     return serveHere(() -> {
       try {
         writeQueued();
@@ -250,31 +210,16 @@ final class Link {
     });
   }
 
-  /**
-   * Writes and flushes every queued frame, unless another thread is writing: that one writes them.
-   * No lock: with many callers on one link, a lock here made them queue for it and sleep.
-   */
+  /** Writes what is queued (see {@link LinkOutput#write}); closes the link if that fails. */
   private void writeQueued() throws IOException {
-    while (!queue.isEmpty() && writing.compareAndSet(false, true)) {
-      try {
-        byte[] next;
-        while ((next = queue.poll()) != null) {
-          // Sealing here, in write order, keeps the cipher's frame counter in step with the wire.
-          out.write(cipher == null ? next : cipher.seal(next));
-        }
-        out.flush();
-        lastSent = System.nanoTime();
-      } catch (IOException e) {
-        queue.clear();
-        close("write failed: " + e.getMessage());
-        throw e;
-      } finally {
-        writing.set(false);
-      }
-      // A frame queued after our last poll by a sender that found us writing is ours: look again.
+    try {
+      output.write();
+    } catch (IOException e) {
+      close("write failed: " + e.getMessage());
+      throw e;
     }
     String closing = closeWhenDrained;
-    if (closing != null && queue.isEmpty() && !writing.get()) {
+    if (closing != null && output.drained()) {
       close(closing);
     }
   }
@@ -285,88 +230,52 @@ final class Link {
     // Whichever thread reads the link carries its name, so thread dumps show who reads what.
     self.setName("trade-link-" + peerName);
     try {
-      readFrames();
+      String why;
+      do {
+        why = readOne();
+      } while (why == null);
+      if (why != MOVED) {
+        end(why);
+      }
     } finally {
       self.setName(ownName);
     }
   }
 
-  private void readFrames() {
-    reader = Thread.currentThread();
-    String reason = "closed";
+  /**
+   * Reads one frame and hands it out.
+   *
+   * @return null to go on reading, {@link #MOVED} if reading went on in another thread, else why
+   *     the link ends
+   */
+  private String readOne() {
     try {
-      while (!closed.get()) {
-        if (!input.holdsWholeFrame() && !endBurst()) {
-          return; // the flush blocked and reading went on in another thread
-        }
-        int length;
-        try {
-          length = in.readInt();
-        } catch (EOFException e) {
-          reason = "connection closed by " + peerName;
-          break;
-        }
-        int overhead = cipher == null ? 0 : FrameCipher.TAG_BYTES;
-        if (length < 2 + overhead || length > maxFrame + overhead) {
-          reason = "malformed frame from " + peerName + ": length " + length
-              + " (limit MAXFRAMESIZE=" + maxFrame + ")";
-          break;
-        }
-        int version;
-        int type;
-        byte[] payload;
-        boolean judged = false; // whether the handler has said the frame is not stale
-        if (cipher == null) {
-          version = in.readUnsignedByte();
-          type = in.readUnsignedByte();
-          int size = length - 2;
-          if (version == Wire.VERSION && input.buffered() >= size) {
-            // Most flood frames are copies: judged in the buffer, they are dropped uncopied.
-            if (handler.isStale(this, type, input.buffer(), input.position(), size)) {
-              input.consume(size);
-              lastReceived = System.nanoTime();
-              continue;
-            }
-            judged = true;
-          }
-          payload = input.readPayload(size, arrived);
-        } else {
-          byte[] sealed = input.readPayload(length, arrived);
-          byte[] body;
-          try {
-            body = cipher.open(sealed);
-          } catch (GeneralSecurityException e) {
-            reason = "frame from " + peerName + " failed decryption (altered or out of order)";
-            break;
-          }
-          version = body[0] & 0xff;
-          type = body[1] & 0xff;
-          payload = Arrays.copyOfRange(body, 2, body.length);
-        }
-        if (version != Wire.VERSION) {
-          reason = "frame of protocol version " + version + " from " + peerName;
-          break;
-        }
-        lastReceived = System.nanoTime();
-        if (!judged && handler.isStale(this, type, payload, 0, payload.length)) {
-          continue;
-        }
-        burst = input.holdsWholeFrame(); // more to hand out after this one: see send
-        if (!handler.frame(this, type, payload)) {
-          return; // reading went on in another thread while this one served a call
-        }
+      if (closed.get()) {
+        return "closed";
       }
+      if (!input.holdsWholeFrame() && !endBurst()) {
+        return MOVED; // the flush blocked and reading went on in another thread
+      }
+      LinkInput.Frame f = input.readFrame();
+      if (f == null) {
+        return null; // a copy, dropped
+      }
+      output.burst(input.holdsWholeFrame()); // more to hand out after this one
+      return handler.frame(this, f.type(), f.payload()) ? null : MOVED;
+    } catch (LinkInput.Broken e) {
+      return e.getMessage();
     } catch (IOException e) {
-      reason = "connection to " + peerName + " lost: " + e.getMessage();
+      return "connection to " + peerName + " lost: " + e.getMessage();
     } catch (RuntimeException e) {
-      reason = "malformed frame from " + peerName + ": " + e;
+      return "malformed frame from " + peerName + ": " + e;
     }
+  }
+
+  /** The reading thread's end: closes the link and tells the handler why. */
+  private void end(String reason) {
     String closedHere = closeReason; // closed while we read (silence, goodbye...): that is why
-    if (closedHere != null) {
-      reason = closedHere;
-    }
-    close(reason);
-    handler.closed(this, reason);
+    close(closedHere != null ? closedHere : reason);
+    handler.closed(this, closedHere != null ? closedHere : reason);
   }
 
   boolean isClosed() {

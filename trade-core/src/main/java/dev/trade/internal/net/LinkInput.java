@@ -1,30 +1,125 @@
 package dev.trade.internal.net;
 
 import java.io.BufferedInputStream;
+import java.io.DataInputStream;
 import java.io.EOFException;
 import java.io.IOException;
 import java.io.InputStream;
+import java.security.GeneralSecurityException;
+import java.util.Arrays;
 
 /**
- * A link's input buffer, which also tells whether the next frame has arrived whole: then the
- * reading thread can go on without blocking, so it may hold back replies until it must wait for the
- * network, and the {@link ReadWatch} may give a burst of calls to a second thread. The reading
- * thread may also look at a frame inside the buffer and drop it there ({@link #consume}), without
- * copying it out.
+ * A link's input: reads its frames ({@link #readFrame}), checking, opening and judging each, and
+ * tells whether the next frame has arrived whole: then the reading thread can go on without
+ * blocking, so it may hold back replies until it must wait for the network, and the
+ * {@link ReadWatch} may give a burst of calls to a second thread. A frame that is a copy of what
+ * the container has is judged and dropped inside the buffer, without being copied out.
+ *
+ * <p>Read by one thread at a time (whoever reads the link), except for {@link #holdsWholeFrame}.
  */
 final class LinkInput extends BufferedInputStream {
   private static final int READ_CHUNK = 64 * 1024;
 
-  LinkInput(InputStream in, int size) {
+  /** A frame read whole. */
+  record Frame(int type, byte[] payload) {}
+
+  /** Says whether a frame is a copy to drop: {@code len} bytes of {@code buf} from {@code off}. */
+  interface Judge {
+    boolean isStale(int type, byte[] buf, int off, int len);
+  }
+
+  /** Why a link ends because of what its peer sent (the message says it). */
+  static final class Broken extends IOException {
+    Broken(String why) {
+      super(why);
+    }
+  }
+
+  private final DataInputStream data = new DataInputStream(this);
+  private final String peerName;
+  private final int maxFrame;
+  private final FrameCipher cipher;
+  private final Judge judge;
+  private final Runnable arrived;
+
+  /**
+   * @param cipher opens the peer's frames; null when the link is not encrypted
+   * @param arrived runs whenever bytes arrive: a peer whose bytes keep coming is not silent
+   */
+  LinkInput(InputStream in, int size, String peerName, int maxFrame, FrameCipher cipher,
+      Judge judge, Runnable arrived) {
     super(in, size);
+    this.peerName = peerName;
+    this.maxFrame = maxFrame;
+    this.cipher = cipher;
+    this.judge = judge;
+    this.arrived = arrived;
+  }
+
+  /**
+   * Reads the next frame, blocking until it is whole.
+   *
+   * @return the frame, or null if it was a copy and is dropped
+   * @throws Broken if the peer closed the connection or sent what it must not
+   * @throws IOException if reading failed
+   */
+  Frame readFrame() throws IOException {
+    int length;
+    try {
+      length = data.readInt();
+    } catch (EOFException e) {
+      throw new Broken("connection closed by " + peerName);
+    }
+    int overhead = cipher == null ? 0 : FrameCipher.TAG_BYTES;
+    if (length < 2 + overhead || length > maxFrame + overhead) {
+      throw new Broken("malformed frame from " + peerName + ": length " + length
+          + " (limit MAXFRAMESIZE=" + maxFrame + ")");
+    }
+    int version;
+    int type;
+    byte[] payload;
+    boolean judged = false; // whether the judge has said the frame is not stale
+    if (cipher == null) {
+      version = data.readUnsignedByte();
+      type = data.readUnsignedByte();
+      int size = length - 2;
+      if (version == Wire.VERSION && buffered() >= size) {
+        // Most flood frames are copies: judged in the buffer, they are dropped uncopied.
+        if (judge.isStale(type, buf, pos, size)) {
+          consume(size);
+          arrived.run();
+          return null;
+        }
+        judged = true;
+      }
+      payload = readPayload(size);
+    } else {
+      byte[] sealed = readPayload(length);
+      byte[] body;
+      try {
+        body = cipher.open(sealed);
+      } catch (GeneralSecurityException e) {
+        throw new Broken("frame from " + peerName + " failed decryption (altered or out of order)");
+      }
+      version = body[0] & 0xff;
+      type = body[1] & 0xff;
+      payload = Arrays.copyOfRange(body, 2, body.length);
+    }
+    if (version != Wire.VERSION) {
+      throw new Broken("frame of protocol version " + version + " from " + peerName);
+    }
+    arrived.run();
+    if (!judged && judge.isStale(type, payload, 0, payload.length)) {
+      return null;
+    }
+    return new Frame(type, payload);
   }
 
   /**
    * Reads a frame's payload into a new array, running {@code arrived} whenever bytes arrive: a
-   * large frame on a slow link can take longer than FAILURETIMEOUT, and a peer whose bytes keep
-   * coming is not silent.
+   * large frame on a slow link can take longer than FAILURETIMEOUT.
    */
-  byte[] readPayload(int size, Runnable arrived) throws IOException {
+  private byte[] readPayload(int size) throws IOException {
     byte[] payload = new byte[size];
     int done = 0;
     while (done < size) {
@@ -43,18 +138,8 @@ final class LinkInput extends BufferedInputStream {
     return count - pos;
   }
 
-  /** The buffer: {@link #buffered()} bytes from {@link #position()} on (reading thread only). */
-  byte[] buffer() {
-    return buf;
-  }
-
-  /** Where the unconsumed bytes start in {@link #buffer()} (reading thread only). */
-  int position() {
-    return pos;
-  }
-
   /** Drops {@code n} of the {@link #buffered()} bytes unread (reading thread only). */
-  void consume(int n) {
+  private void consume(int n) {
     if (n < 0 || n > count - pos) {
       throw new IllegalArgumentException(n + " of " + (count - pos) + " buffered bytes");
     }

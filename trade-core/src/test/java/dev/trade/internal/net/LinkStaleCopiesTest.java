@@ -40,7 +40,7 @@ class LinkStaleCopiesTest {
   }
 
   /** Judges a payload stale by its first byte; records what it was asked and what it was given. */
-  private static final class Judge implements Link.Handler {
+  private static final class Judge implements LinkHandler {
     /** Per question: the payload's length, and whether it lay amid other bytes (the buffer). */
     final List<int[]> asked = new CopyOnWriteArrayList<>();
     final BlockingQueue<byte[]> delivered = new LinkedBlockingQueue<>();

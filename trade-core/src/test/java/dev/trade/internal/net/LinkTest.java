@@ -68,7 +68,7 @@ class LinkTest {
   }
 
   /** Records the reason the link reports when it closes; closes it on GOODBYE, as Network does. */
-  private static final class Recorder implements Link.Handler {
+  private static final class Recorder implements LinkHandler {
     final CompletableFuture<String> reason = new CompletableFuture<>();
 
     @Override
@@ -142,7 +142,7 @@ class LinkTest {
   }
 
   /** A handler that serves every frame on the reading thread with {@code work} and records frames. */
-  private static final class Serving implements Link.Handler {
+  private static final class Serving implements LinkHandler {
     final BlockingQueue<Integer> seen = new LinkedBlockingQueue<>();
     final Consumer<Link> work;
 
@@ -251,7 +251,7 @@ class LinkTest {
   void repliesToABurstOfCallsAllLeave() throws Exception {
     int burst = 200;
     Link link = new Link(near, peer("C"), true, 1 << 20);
-    Link.Handler h = new Link.Handler() {
+    LinkHandler h = new LinkHandler() {
       @Override
       public boolean frame(Link l, int type, byte[] payload) {
         if (payload.length != 5) {

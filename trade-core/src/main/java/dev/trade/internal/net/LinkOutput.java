@@ -1,0 +1,110 @@
+package dev.trade.internal.net;
+
+import java.io.IOException;
+import java.io.OutputStream;
+import java.util.Queue;
+import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.atomic.AtomicBoolean;
+
+/**
+ * A link's writing. A sender that finds the socket idle writes its frame itself (no thread
+ * hand-off on the latency path); senders that arrive while a write is in progress only queue
+ * their frame, and the writing thread drains the queue before it flushes, so concurrent calls
+ * share system calls. No lock: with many callers on one link, a lock here made them queue for it
+ * and sleep.
+ *
+ * <p>While the link's reader hands out frames read together (a burst: calls it serves, replies
+ * that wake callers who call again at once), what they send is left for the reader to write once
+ * it has handed them all out ({@link #endBurst}), in one system call.
+ *
+ * <p>Safe for concurrent use.
+ */
+final class LinkOutput {
+  private final OutputStream out;
+  private final FrameCipher cipher;
+  private final Runnable written;
+  private final Queue<byte[]> queue = new ConcurrentLinkedQueue<>();
+  private final AtomicBoolean writing = new AtomicBoolean();
+  /** Whether the reader hands out frames read together with more; see leftForBurst. */
+  private volatile boolean burst;
+  /** Whether a frame was sent, and perhaps left for the end of a burst, since the last look. */
+  private volatile boolean deferred;
+
+  /**
+   * @param cipher seals each frame as it is written; null when the link is not encrypted
+   * @param written runs after each flush
+   */
+  LinkOutput(OutputStream out, FrameCipher cipher, Runnable written) {
+    this.out = out;
+    this.cipher = cipher;
+    this.written = written;
+  }
+
+  /** Queues a complete frame (header included) for the next {@link #write}. */
+  void offer(byte[] frame) {
+    queue.offer(frame);
+  }
+
+  /**
+   * After {@link #offer}: whether the frame is left for the reader, which is handing out a burst
+   * and writes it at the burst's end; if not, the sender writes.
+   */
+  boolean leftForBurst() {
+    deferred = true; // before looking at burst, see endBurst
+    if (burst) {
+      // Whoever reads after this burst sees the frame too, as a burst ends before then.
+      return true;
+    }
+    deferred = false;
+    return false;
+  }
+
+  /** The reader is about to hand out a frame; {@code more} whether more wait read behind it. */
+  void burst(boolean more) {
+    burst = more;
+  }
+
+  /**
+   * Ends a burst (reader, before it may block in a read).
+   *
+   * @return whether frames were left for it: then it must {@link #write}
+   */
+  boolean endBurst() {
+    burst = false; // before looking at deferred: a sender that saw burst true set it before this
+    if (!deferred) {
+      return false; // what others queued (the control thread's floods) they write themselves
+    }
+    deferred = false;
+    return true;
+  }
+
+  /**
+   * Writes and flushes every queued frame, unless another thread is writing: that one writes them.
+   *
+   * @throws IOException if a write failed; what was queued is dropped (the link is to close)
+   */
+  void write() throws IOException {
+    while (!queue.isEmpty() && writing.compareAndSet(false, true)) {
+      try {
+        byte[] next;
+        while ((next = queue.poll()) != null) {
+          // Sealing here, in write order, keeps the cipher's frame counter in step with the wire.
+          out.write(cipher == null ? next : cipher.seal(next));
+        }
+        out.flush();
+        written.run();
+      } catch (IOException e) {
+        queue.clear();
+        throw e;
+      } finally {
+        writing.set(false);
+      }
+      // A frame queued after our last poll by a sender that found us writing is ours: look again.
+    }
+  }
+
+  /** Whether nothing is queued and nobody writes. */
+  boolean drained() {
+    return queue.isEmpty() && !writing.get();
+  }
+}
