@@ -111,7 +111,7 @@ final class Heartbeat {
           try {
             l.send(PING);
           } catch (IOException e) {
-            // send() closed the link; its reader reports it.
+            // The link is closing; its reading reports why.
           } finally {
             l.pinging = false;
           }

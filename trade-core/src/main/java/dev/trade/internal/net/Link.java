@@ -46,6 +46,8 @@ final class Link {
   private volatile String closeReason;
   // Set when the link is to close once the queued frames are written.
   private volatile String closeWhenDrained;
+  /** Why a write failed, if one did: then nothing more is written, and reading ends the link. */
+  private volatile String writeFailure;
   private LinkHandler handler;
   private ReadWatch watch;
   // Odd while the reading thread serves a call; each call and each hand-off counts one up, so a
@@ -178,7 +180,7 @@ final class Link {
    * @throws IOException when the link is closed
    */
   void queue(byte[] frame) throws IOException {
-    if (closed.get()) {
+    if (isClosed()) {
       throw new IOException("link to " + peerName + " is closed");
     }
     output.offer(frame);
@@ -205,17 +207,17 @@ final class Link {
       try {
         writeQueued();
       } catch (IOException e) {
-        // writeQueued closed the link; the read loop ends with its reason.
+        // The write failed: reading goes on to the end the peer left (see writeFailed).
       }
     });
   }
 
-  /** Writes what is queued (see {@link LinkOutput#write}); closes the link if that fails. */
+  /** Writes what is queued (see {@link LinkOutput#write}); see {@link #writeFailed}. */
   private void writeQueued() throws IOException {
     try {
       output.write();
     } catch (IOException e) {
-      close("write failed: " + e.getMessage());
+      writeFailed("write failed: " + e.getMessage());
       throw e;
     }
     String closing = closeWhenDrained;
@@ -278,8 +280,25 @@ final class Link {
     handler.closed(this, closedHere != null ? closedHere : reason);
   }
 
+  /**
+   * A write failed, mostly because the peer closed the connection, perhaps right after its
+   * goodbye, which may still wait to be read. Closing the socket now would drop it, and an orderly
+   * leave would count as a failure. So the link only stops writing and counts as closed to senders;
+   * its reading reads what the peer sent last, then finds the end and closes it with the reason it
+   * read. Should the peer be silent instead, the heartbeat closes the link.
+   */
+  private void writeFailed(String why) {
+    writeFailure = why;
+    try {
+      socket.shutdownOutput();
+    } catch (IOException e) {
+      close(why);
+    }
+  }
+
+  /** Whether the link is closed, or can no longer be written to: then it is about to close. */
   boolean isClosed() {
-    return closed.get();
+    return closed.get() || writeFailure != null;
   }
 
   /** Closes the link once the frames already handed to {@link #send} are written. */
@@ -288,7 +307,7 @@ final class Link {
     try {
       writeQueued(); // closes once nothing is queued and nobody writes
     } catch (IOException e) {
-      // writeQueued() closed the link.
+      close(reason); // nothing more can be sent
     }
   }
 

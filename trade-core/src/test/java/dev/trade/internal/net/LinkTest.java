@@ -35,7 +35,8 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
 /**
- * A link reports why it was closed (the first reason given to close(), not a generic "closed"); it
+ * A link reports why it was closed (the first reason given to close(), not a generic "closed"; a
+ * goodbye read after a write to the departed peer failed); it
  * goes on being read while its reading thread serves a long call; a served call that waits for a
  * remote reply lets reading go on at once; replies sent during a burst of calls all leave.
  */
@@ -112,6 +113,30 @@ class LinkTest {
     link.start(r, watch);
     far.close();
     assertEquals("connection closed by C", r.reason.get(5, TimeUnit.SECONDS));
+  }
+
+  @Test
+  void aPeerThatSaidGoodbyeBeforeOurWriteFailedLeftInOrder() throws Exception {
+    Link link = new Link(near, peer("C"), true, 1 << 20);
+    byte[] ping = Frames.finish(Frames.start(Wire.PING, 0));
+    link.send(ping); // left unread by the peer: its close then resets the connection
+    sendFromFar(Frames.finish(Frames.start(Wire.GOODBYE, 0)));
+    far.close();
+    long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
+    boolean failed = false;
+    while (!failed && System.nanoTime() < deadline) { // until the reset has come back
+      try {
+        link.send(ping);
+      } catch (IOException e) {
+        failed = true;
+      }
+    }
+    assertTrue(failed, "a write to a closed peer failed");
+    assertTrue(link.isClosed(), "senders see the link closed");
+    assertThrows(IOException.class, () -> link.send(ping));
+    Recorder r = new Recorder();
+    link.start(r, watch);
+    assertEquals("said goodbye", r.reason.get(5, TimeUnit.SECONDS), "the goodbye was read");
   }
 
   @Test
