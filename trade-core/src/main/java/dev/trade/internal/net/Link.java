@@ -5,14 +5,13 @@ import java.io.IOException;
 import java.net.Socket;
 import java.util.UUID;
 import java.util.concurrent.atomic.AtomicBoolean;
-import java.util.concurrent.atomic.AtomicLong;
 
 /**
  * One authenticated connection to a neighbouring container.
  *
  * <p><b>Writing</b> combines frames ({@link LinkOutput}). <b>Reading</b> happens on one thread at a
  * time, which hands each frame to the {@link LinkHandler}. The handler serves a call on that thread
- * ({@link #serveHere}); a {@link ReadWatch} moves reading to another thread when a call takes
+ * ({@link ServedCalls}); a {@link ReadWatch} moves reading to another thread when a call takes
  * longer than a tick. Frames the reading thread sends while the next frame is already buffered
  * (replies to a burst of calls) wait until it has served that burst, and then leave with one
  * system call.
@@ -22,8 +21,6 @@ import java.util.concurrent.atomic.AtomicLong;
 final class Link {
   private static final int BUFFER = 8 * 1024;
 
-  /** The link whose call the current thread serves on that link's reading thread, if any. */
-  private static final ThreadLocal<Link> SERVING = new ThreadLocal<>();
   /**
    * What the read steps answer when reading went on in another thread; compared by identity, so
    * that no reason why a link ends can be taken for it.
@@ -50,13 +47,7 @@ final class Link {
   private volatile String writeFailure;
   private LinkHandler handler;
   private ReadWatch watch;
-  // Odd while the reading thread serves a call; each call and each hand-off counts one up, so a
-  // stale value never matches a later call.
-  private final AtomicLong work = new AtomicLong();
-  // The thread whose call 'work' counts while it is odd.
-  private volatile Thread worker;
-  // What the watch saw at its last look; read and written by the watch thread only.
-  private long watchSeen;
+  private volatile ServedCalls served;
   volatile long lastReceived = System.nanoTime();
   private final Runnable arrived = () -> lastReceived = System.nanoTime();
   volatile long lastSent = System.nanoTime();
@@ -88,75 +79,25 @@ final class Link {
   void start(LinkHandler handler, ReadWatch watch) {
     this.handler = handler;
     this.watch = watch;
+    this.served = new ServedCalls(watch, input, () -> {
+      if (!watch.read(this::readLoop)) {
+        close("container closing");
+      }
+    });
     Thread t = new Thread(this::readLoop, "trade-reader-" + peerName);
     t.setDaemon(true);
     t.start();
   }
 
-  /**
-   * Serves a call on the thread that read it (called by the handler, on the reading thread): the call
-   * runs without another thread waking up first, and its reply can leave with those of the calls
-   * read with it. Should the call take longer than a tick of the {@link ReadWatch}, or wait for a
-   * remote reply ({@link #releaseReading}), reading goes on in another thread meanwhile.
-   *
-   * @return true if this thread still reads the link, false if reading went on elsewhere (then
-   *     this thread leaves the read loop)
-   */
+  /** Serves a call on the reading thread that read it; see {@link ServedCalls#serveHere}. */
   boolean serveHere(Runnable call) {
-    worker = Thread.currentThread();
-    long stamp = work.incrementAndGet();
-    watch.serving();
-    SERVING.set(this);
-    try {
-      call.run();
-    } finally {
-      SERVING.set(null);
-    }
-    return work.compareAndSet(stamp, stamp + 1);
+    return served.serveHere(call);
   }
 
-  /**
-   * Called by a thread that is about to wait for a remote reply: if it is serving a call on a
-   * link's reading thread, reading goes on elsewhere at once, since the reply may come over that very
-   * link.
-   */
-  static void releaseReading() {
-    Link link = SERVING.get();
-    if (link != null) {
-      SERVING.set(null);
-      long stamp = link.work.get();
-      if (link.worker == Thread.currentThread()) {
-        link.handOff(stamp);
-      }
-    }
-  }
-
-  /**
-   * The watch's look at this link (watch thread only). Hands reading on when the reading thread has
-   * served the same call since the last look (a slow call), or serves a call while whole frames
-   * wait behind it (a burst that another core can help with). Either costs one thread wake-up,
-   * at most once per tick.
-   *
-   * @return whether the link served any call since the last look
-   */
+  /** The {@link ReadWatch}'s look at this link; see {@link ServedCalls#look}. */
   boolean watch() {
-    long stamp = work.get();
-    boolean serving = (stamp & 1) == 1;
-    boolean changed = stamp != watchSeen;
-    if (serving && (!changed || input.holdsWholeFrame())) {
-      handOff(stamp);
-    }
-    watchSeen = stamp;
-    return changed || serving;
-  }
-
-  /** Moves reading to another thread if {@code stamp} is still the call being served. */
-  private void handOff(long stamp) {
-    if ((stamp & 1) == 1 && work.compareAndSet(stamp, stamp + 1)) {
-      if (!watch.read(this::readLoop)) {
-        close("container closing");
-      }
-    }
+    ServedCalls s = served;
+    return s != null && s.look();
   }
 
   /**

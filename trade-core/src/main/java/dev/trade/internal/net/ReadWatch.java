@@ -9,14 +9,14 @@ import java.util.concurrent.locks.LockSupport;
 /**
  * Keeps every link read while calls are served on the threads that read them.
  *
- * <p>A link's reading thread serves a call itself (see {@link Link#serveHere}): no other thread has
+ * <p>A link's reading thread serves a call itself (see {@link ServedCalls#serveHere}): no other thread has
  * to wake up before the call runs or after it, which is most of a small call's cost. While it
  * serves, nobody reads that link. This watch looks at the links once per tick (about a
  * millisecond) and, when a link's thread has been serving the same call for a whole tick, hands
  * reading to a thread of the executor; the serving thread leaves the read loop when its call ends.
  * So a slow or blocked service delays the frames behind it on its link by one to two ticks, never
  * its heartbeats by more, and fast calls never pay for a hand-off. The same thing happens at once
- * when a served call itself waits for a remote reply ({@link Link#releaseReading}).
+ * when a served call itself waits for a remote reply ({@link ServedCalls#releaseReading}).
  *
  * <p>The watch ticks only while calls are being served: after a few ticks without any, it parks
  * until the next one starts, so idle containers (and a hundred of them on one host) cost nothing,

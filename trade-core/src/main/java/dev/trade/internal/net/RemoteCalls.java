@@ -104,7 +104,7 @@ final class RemoteCalls {
     pending.put(id, p);
     // A service calling out while it is served on a link's reading thread: the reply may come over
     // that link, so it must go on being read.
-    Link.releaseReading();
+    ServedCalls.releaseReading();
     try {
       link.send(frame);
       if (link.isClosed()) { // closed between lookup and registration: nobody will fail us

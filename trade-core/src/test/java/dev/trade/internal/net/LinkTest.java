@@ -256,7 +256,7 @@ class LinkTest {
     CountDownLatch release = new CountDownLatch(1);
     Link link = new Link(near, peer("C"), true, 1 << 20);
     Serving h = new Serving(l -> {
-      Link.releaseReading();
+      ServedCalls.releaseReading();
       try {
         release.await();
       } catch (InterruptedException e) {
