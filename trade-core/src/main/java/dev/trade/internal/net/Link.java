@@ -4,6 +4,7 @@ import java.io.BufferedOutputStream;
 import java.io.IOException;
 import java.net.Socket;
 import java.util.UUID;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.atomic.AtomicBoolean;
 
 /**
@@ -12,7 +13,8 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * <p><b>Writing</b> combines frames ({@link LinkOutput}). <b>Reading</b> happens on one thread at a
  * time, which hands each frame to the {@link LinkHandler}. The handler serves a call on that thread
  * ({@link ServedCalls}); a {@link ReadWatch} moves reading to another thread when a call takes
- * longer than a tick. Frames the reading thread sends while the next frame is already buffered
+ * longer than a tick. A lone caller waiting for its reply reads the link itself ({@link #readFor},
+ * {@link ReadRole}). Frames the reading thread sends while the next frame is already buffered
  * (replies to a burst of calls) wait until it has served that burst, and then leave with one
  * system call.
  *
@@ -47,6 +49,11 @@ final class Link {
   private volatile String writeFailure;
   private LinkHandler handler;
   private ReadWatch watch;
+  /**
+   * Whether the link's thread or a caller waiting for its reply reads; such a caller counts itself
+   * ({@link ReadRole#borrow}) before it sends its call.
+   */
+  final ReadRole role = new ReadRole();
   private volatile ServedCalls served;
   volatile long lastReceived = System.nanoTime();
   private final Runnable arrived = () -> lastReceived = System.nanoTime();
@@ -80,11 +87,11 @@ final class Link {
     this.handler = handler;
     this.watch = watch;
     this.served = new ServedCalls(watch, input, () -> {
-      if (!watch.read(this::readLoop)) {
+      if (!watch.read(() -> readLoop(null))) {
         close("container closing");
       }
     });
-    Thread t = new Thread(this::readLoop, "trade-reader-" + peerName);
+    Thread t = new Thread(() -> readLoop(null), "trade-reader-" + peerName);
     t.setDaemon(true);
     t.start();
   }
@@ -167,31 +174,108 @@ final class Link {
     }
   }
 
-  private void readLoop() {
+  /** Reads the link on this thread, after handing out {@code first} if there is one. */
+  private void readLoop(LinkInput.Frame first) {
     Thread self = Thread.currentThread();
     String ownName = self.getName();
     // Whichever thread reads the link carries its name, so thread dumps show who reads what.
     self.setName("trade-link-" + peerName);
     try {
-      String why;
-      do {
-        why = readOne();
-      } while (why == null);
-      if (why != MOVED) {
-        end(why);
+      if (first != null) {
+        if (!handler.frame(this, first.type(), first.payload())) {
+          return;
+        }
       }
+      readFrames();
+    } catch (IOException e) {
+      end("connection to " + peerName + " lost: " + e.getMessage());
+    } catch (RuntimeException e) {
+      end("malformed frame from " + peerName + ": " + e);
     } finally {
       self.setName(ownName);
     }
   }
 
+  private void readFrames() {
+    role.takenOver(); // a hand-off's new thread reads now, whoever read before
+    while (true) {
+      if (input.buffered() == 0 && role.callerWaits() && !closed.get()) {
+        // A lone caller waits for its reply over this link: it reads the reply itself.
+        if (!endBurst() || !role.lend()) {
+          return; // another thread reads now, or reading ended
+        }
+        continue;
+      }
+      String why = readOne(false);
+      if (why == MOVED) {
+        return;
+      }
+      if (why != null) {
+        end(why);
+        return;
+      }
+    }
+  }
+
   /**
-   * Reads one frame and hands it out.
+   * Waits for {@code reply} until {@code until} ({@link System#nanoTime}), reading the link
+   * itself whenever it is lent to callers (see {@link ReadRole}): then the reply wakes no thread
+   * on its way to this one. The caller has called {@link ReadRole#borrow} before sending its
+   * call, and calls {@link ReadRole#giveBack} after this.
+   */
+  void readFor(CompletableFuture<?> reply, long until) {
+    while (!reply.isDone() && System.nanoTime() - until < 0) {
+      if (role.tryTake()) {
+        String why = readLent(reply, until);
+        if (why == null) {
+          role.release();
+        } else if (why != MOVED) {
+          end(why);
+        }
+      } else {
+        Thread.onSpinWait();
+      }
+    }
+  }
+
+  /**
+   * A caller reads the link until its reply is done (and the frames read with it are handed
+   * out) or its time is up; spinning, not blocking, so that it can stop in time.
+   *
+   * @return null when it stops reading, {@link #MOVED} if reading went on in another thread,
+   *     else why the link ends
+   */
+  private String readLent(CompletableFuture<?> reply, long until) {
+    try {
+      while (!closed.get()) {
+        boolean whole = input.holdsWholeFrame();
+        if (!whole && (reply.isDone() || System.nanoTime() - until >= 0)) {
+          return endBurst() ? null : MOVED;
+        }
+        if (whole || input.available() > 0) {
+          String why = readOne(true);
+          if (why != null) {
+            return why;
+          }
+        } else {
+          Thread.onSpinWait();
+        }
+      }
+      return "closed";
+    } catch (IOException e) {
+      return "connection to " + peerName + " lost: " + e.getMessage();
+    }
+  }
+
+  /**
+   * Reads one frame and hands it out. A caller that reads ({@code lent}) hands a call, and the
+   * reading with it, to another thread: serving it could take any time, which its caller must
+   * not wait for.
    *
    * @return null to go on reading, {@link #MOVED} if reading went on in another thread, else why
    *     the link ends
    */
-  private String readOne() {
+  private String readOne(boolean lent) {
     try {
       if (closed.get()) {
         return "closed";
@@ -204,6 +288,10 @@ final class Link {
         return null; // a copy, dropped
       }
       output.burst(input.holdsWholeFrame()); // more to hand out after this one
+      if (lent && f.type() == Wire.CALL) {
+        role.takenOver();
+        return watch.read(() -> readLoop(f)) ? MOVED : "container closing";
+      }
       return handler.frame(this, f.type(), f.payload()) ? null : MOVED;
     } catch (LinkInput.Broken e) {
       return e.getMessage();
@@ -216,6 +304,7 @@ final class Link {
 
   /** The reading thread's end: closes the link and tells the handler why. */
   private void end(String reason) {
+    role.ended();
     String closedHere = closeReason; // closed while we read (silence, goodbye...): that is why
     close(closedHere != null ? closedHere : reason);
     handler.closed(this, closedHere != null ? closedHere : reason);
@@ -261,6 +350,7 @@ final class Link {
       } catch (IOException ignored) {
         // Closing is best effort; the reader notices either way.
       }
+      role.closing(); // a thread that lent reading takes it back, and ends it
     }
   }
 

@@ -105,18 +105,26 @@ final class RemoteCalls {
     // A service calling out while it is served on a link's reading thread: the reply may come over
     // that link, so it must go on being read.
     ServedCalls.releaseReading();
+    // Before sending: the link's thread must know a caller may read the reply before it comes.
+    boolean borrowed = replyWait.borrow(link);
+    boolean sentOk = false;
     try {
       link.send(frame);
       if (link.isClosed()) { // closed between lookup and registration: nobody will fail us
         throw new IOException("link closed");
       }
+      sentOk = true;
     } catch (IOException e) {
       pending.remove(id);
       throw LocalInvoker.unavailable(d, "the connection to its container was lost");
+    } finally {
+      if (!sentOk) {
+        replyWait.abandon(link, borrowed);
+      }
     }
     byte[] reply;
     try {
-      reply = replyWait.await(p.reply, sent, deadlineNanos);
+      reply = replyWait.await(link, borrowed, p.reply, sent, deadlineNanos);
     } catch (TimeoutException e) {
       pending.remove(id);
       throw new TRADETimeoutException("Service " + d.signature() + " of container "

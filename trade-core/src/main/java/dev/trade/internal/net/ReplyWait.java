@@ -8,10 +8,12 @@ import java.util.concurrent.atomic.AtomicInteger;
 
 /**
  * How a caller waits for its reply. A lone caller whose replies have lately come back within
- * {@link #MAX_SPIN_NANOS} spins for about two round trips before it parks: the link's reading thread
- * then hands it the reply without waking it, which saves a thread wake-up (5-20 us on a small
- * machine) per call. Many callers at once park at once: their spinning would take the cores that
- * produce the replies. Safe for concurrent use.
+ * {@link #MAX_SPIN_NANOS} waits actively for about two round trips before it parks, and reads the
+ * link itself meanwhile (see {@link ReadRole}): the reply then wakes no thread on its way to the
+ * caller, which saves one or two thread wake-ups (5-20 us each on a small machine) per call. Should
+ * the link's thread still read when the reply comes, it hands the reply over without waking the
+ * caller. Many callers at once park at once: their spinning would take the cores that produce
+ * the replies. Safe for concurrent use.
  */
 final class ReplyWait {
   /** Spinning only helps when another core can run the threads that bring the reply. */
@@ -30,20 +32,52 @@ final class ReplyWait {
   }
 
   /**
-   * Waits for {@code reply} until the deadline.
+   * Before a call is sent over {@code link}: whether its caller will likely wait alone and
+   * actively, and so read its reply itself; then it is counted on the link
+   * ({@link ReadRole#borrow}), and must pass true to {@link #await} or {@link #abandon}.
+   */
+  boolean borrow(Link link) {
+    if (SPIN && waiting.get() == 0 && roundTrip < MAX_SPIN_NANOS) {
+      link.role.borrow();
+      return true;
+    }
+    return false;
+  }
+
+  /** The call was not sent after all: ends its {@link #borrow}. */
+  void abandon(Link link, boolean borrowed) {
+    if (borrowed) {
+      link.role.giveBack(true);
+    }
+  }
+
+  /**
+   * Waits for {@code reply} to the call sent over {@code link} until the deadline.
    *
+   * @param borrowed what {@link #borrow} said for the call
    * @param sent when the call was sent ({@link System#nanoTime})
    */
-  byte[] await(CompletableFuture<byte[]> reply, long sent, long deadlineNanos)
-      throws TimeoutException, ExecutionException, InterruptedException {
+  byte[] await(Link link, boolean borrowed, CompletableFuture<byte[]> reply, long sent,
+      long deadlineNanos) throws TimeoutException, ExecutionException, InterruptedException {
     try {
-      if (waiting.getAndIncrement() == 0 && SPIN) {
-        long estimate = roundTrip;
-        if (estimate < MAX_SPIN_NANOS) {
+      boolean lone = waiting.getAndIncrement() == 0;
+      long estimate = roundTrip;
+      try {
+        if (lone && SPIN && estimate < MAX_SPIN_NANOS) {
           long until = sent + Math.min(MAX_SPIN_NANOS, 2 * estimate);
-          while (!reply.isDone() && System.nanoTime() - until < 0) {
-            Thread.onSpinWait();
+          if (borrowed) {
+            link.readFor(reply, until);
+          } else {
+            while (!reply.isDone() && System.nanoTime() - until < 0) {
+              Thread.onSpinWait();
+            }
           }
+        }
+      } finally {
+        if (borrowed) {
+          // The link's thread reads again at once if this caller goes on waiting (parked), or
+          // if others wait: nobody may read for them now.
+          link.role.giveBack(!reply.isDone() || waiting.get() > 1);
         }
       }
       byte[] result = reply.isDone() ? reply.get()

@@ -2,10 +2,14 @@ package dev.trade.internal.net;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import java.net.Socket;
+import java.util.UUID;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
@@ -27,7 +31,7 @@ class ReplyWaitTest {
       byte[] body = {(byte) delayMs};
       CompletableFuture.delayedExecutor(delayMs, TimeUnit.MILLISECONDS).execute(() -> reply.complete(body));
       long sent = System.nanoTime();
-      assertArrayEquals(body, wait.await(reply, sent, sent + TimeUnit.SECONDS.toNanos(5)));
+      assertArrayEquals(body, wait.await(null, false, reply, sent, sent + TimeUnit.SECONDS.toNanos(5)));
       assertEquals(0, wait.waiting());
     }
   }
@@ -35,7 +39,7 @@ class ReplyWaitTest {
   @Test
   void noReplyFailsAtTheDeadline() {
     long sent = System.nanoTime();
-    assertThrows(TimeoutException.class, () -> wait.await(new CompletableFuture<>(), sent,
+    assertThrows(TimeoutException.class, () -> wait.await(null, false, new CompletableFuture<>(), sent,
         sent + TimeUnit.MILLISECONDS.toNanos(100)));
     long waited = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - sent);
     assertTrue(waited >= 90, "gave up after " + waited + " ms");
@@ -48,8 +52,31 @@ class ReplyWaitTest {
     CompletableFuture<byte[]> reply = CompletableFuture.failedFuture(cause);
     long sent = System.nanoTime();
     ExecutionException e = assertThrows(ExecutionException.class,
-        () -> wait.await(reply, sent, sent + TimeUnit.SECONDS.toNanos(5)));
+        () -> wait.await(null, false, reply, sent, sent + TimeUnit.SECONDS.toNanos(5)));
     assertSame(cause, e.getCause());
     assertEquals(0, wait.waiting());
+  }
+
+  @Test
+  void aLoneCallerReadsTheLinkAndNoOutcomeLeavesItCountedThere() throws Exception {
+    assumeTrue(Runtime.getRuntime().availableProcessors() > 1, "callers wait actively on 2+ cores");
+    try (LoopbackLinks links = new LoopbackLinks()) {
+      Link link = links.link(UUID.randomUUID(), "peer", new Socket[1]);
+      assertTrue(wait.borrow(link), "a lone caller reads its reply itself");
+      assertTrue(link.role.callerWaits());
+      long sent = System.nanoTime();
+      assertArrayEquals(new byte[] {1}, wait.await(link, true,
+          CompletableFuture.completedFuture(new byte[] {1}), sent, sent + TimeUnit.SECONDS.toNanos(5)));
+      assertFalse(link.role.callerWaits(), "counted after its reply");
+
+      link.role.borrow(); // as borrow does (it may decline now: the first reply took long)
+      assertThrows(TimeoutException.class, () -> wait.await(link, true, new CompletableFuture<>(),
+          System.nanoTime(), System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(20)));
+      assertFalse(link.role.callerWaits(), "counted after its deadline");
+
+      link.role.borrow();
+      wait.abandon(link, true); // the call could not be sent
+      assertFalse(link.role.callerWaits(), "counted after its call was not sent");
+    }
   }
 }

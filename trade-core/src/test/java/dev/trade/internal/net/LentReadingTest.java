@@ -1,0 +1,197 @@
+package dev.trade.internal.net;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trade.internal.codec.ByteSink;
+import java.io.IOException;
+import java.net.Socket;
+import java.time.Duration;
+import java.util.List;
+import java.util.UUID;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+
+/**
+ * A caller waiting for its reply over a link reads the link itself (no thread hands it the reply);
+ * the link's thread reads again once callers stop; a call read by a caller is served on another
+ * thread, so the caller never waits for it; a link that ends while a caller reads ends once.
+ */
+@Timeout(60)
+class LentReadingTest {
+  private static final Duration WAIT = Duration.ofSeconds(10);
+  private final ExecutorService workers = Executors.newCachedThreadPool();
+  private final List<Link> watched = new CopyOnWriteArrayList<>();
+  private final ReadWatch watch = new ReadWatch(watched, workers, "lent");
+  private final LoopbackLinks links = new LoopbackLinks();
+  private final Socket[] far = new Socket[1];
+
+  @AfterEach
+  void close() throws IOException {
+    links.close();
+    watch.close();
+    workers.shutdownNow();
+  }
+
+  /** Records on which thread each frame was handed out; completes the reply a caller waits for. */
+  private static final class Handler implements LinkHandler {
+    final CompletableFuture<byte[]> reply = new CompletableFuture<>();
+    final BlockingQueue<Thread> replyReaders = new LinkedBlockingQueue<>();
+    final BlockingQueue<Thread> callServers = new LinkedBlockingQueue<>();
+    final CountDownLatch callMayEnd = new CountDownLatch(1);
+    final AtomicInteger closings = new AtomicInteger();
+    volatile String why;
+
+    @Override
+    public boolean frame(Link link, int type, byte[] payload) {
+      if (type == Wire.CALL) {
+        return link.serveHere(() -> {
+          callServers.add(Thread.currentThread());
+          try {
+            callMayEnd.await(); // a slow service
+          } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+          }
+        });
+      }
+      if (type != Wire.REPLY) {
+        return true;
+      }
+      replyReaders.add(Thread.currentThread());
+      reply.complete(payload);
+      return true;
+    }
+
+    @Override
+    public void closed(Link link, String why) {
+      this.why = why;
+      closings.incrementAndGet();
+    }
+  }
+
+  private Link started(Handler h) throws IOException {
+    Link link = links.link(UUID.randomUUID(), "lentpeer", far);
+    watched.add(link);
+    link.start(h, watch);
+    return link;
+  }
+
+  private void sendFromFar(int type) throws IOException {
+    ByteSink out = Frames.start(type, 8);
+    out.writeLong(42);
+    far[0].getOutputStream().write(Frames.finish(out));
+    far[0].getOutputStream().flush();
+  }
+
+  /**
+   * A caller counts itself on the link; a frame from the far end then lets the link's thread,
+   * blocked in a read before, see the caller and lend it reading.
+   */
+  private void borrow(Link link) throws IOException {
+    link.role.borrow();
+    sendFromFar(Wire.PING);
+    Deadline.await(WAIT, link.role::isLent, "the link's thread to lend reading");
+  }
+
+  private static long in(Duration d) {
+    return System.nanoTime() + d.toNanos();
+  }
+
+  @Test
+  void aCallerWaitingForItsReplyReadsItItself() throws Exception {
+    Handler h = new Handler();
+    Link link = started(h);
+    borrow(link);
+    sendFromFar(Wire.REPLY);
+    link.readFor(h.reply, in(WAIT));
+    link.role.giveBack(false);
+    assertTrue(h.reply.isDone(), "the reply came within the wait");
+    assertSame(Thread.currentThread(), h.replyReaders.poll(), "the caller read its reply");
+  }
+
+  @Test
+  void theLinksThreadReadsAgainOnceCallersStop() throws Exception {
+    Handler h = new Handler();
+    Link link = started(h);
+    borrow(link);
+    link.readFor(new CompletableFuture<>(), in(Duration.ofMillis(1))); // no reply comes
+    link.role.giveBack(false);
+    Deadline.await(WAIT, () -> !link.role.isLent(), "the link's thread to take reading back");
+    sendFromFar(Wire.REPLY);
+    Thread reader = h.replyReaders.poll(WAIT.toMillis(), TimeUnit.MILLISECONDS);
+    assertNotEquals(null, reader, "a frame after the callers stopped was read");
+    assertNotEquals(Thread.currentThread(), reader);
+  }
+
+  @Test
+  void aCallThatACallerReadsIsServedOnAnotherThreadAndTheCallerGetsItsReply() throws Exception {
+    Handler h = new Handler();
+    Link link = started(h);
+    borrow(link);
+    sendFromFar(Wire.CALL); // a slow call read by the caller, then the caller's reply
+    sendFromFar(Wire.REPLY);
+    Thread caller = Thread.currentThread();
+    try {
+      link.readFor(h.reply, in(WAIT));
+      link.role.giveBack(!h.reply.isDone());
+      assertEquals(8, h.reply.get(WAIT.toMillis(), TimeUnit.MILLISECONDS).length, "the reply");
+      Thread server = h.callServers.poll(WAIT.toMillis(), TimeUnit.MILLISECONDS);
+      assertNotEquals(null, server, "the call was served");
+      assertNotEquals(caller, server, "the caller served a call it read");
+    } finally {
+      h.callMayEnd.countDown();
+    }
+  }
+
+  @Test
+  void aLinkThatACallerFindsBrokenEndsOnce() throws Exception {
+    Handler h = new Handler();
+    Link link = started(h);
+    borrow(link);
+    Future<?> caller = workers.submit(() -> {
+      link.readFor(h.reply, in(WAIT));
+      link.role.giveBack(!h.reply.isDone());
+    });
+    Deadline.await(WAIT, link.role::isCallerReading, "the caller to read");
+    far[0].getOutputStream().write(new byte[] {0x7f, 0, 0, 0}); // a frame longer than allowed
+    far[0].getOutputStream().flush();
+    caller.get(WAIT.toMillis(), TimeUnit.MILLISECONDS);
+    assertEndedOnce(link, h, "malformed frame from lentpeer: length 2130706432"
+        + " (limit MAXFRAMESIZE=1048576)");
+  }
+
+  @Test
+  void aPeerThatLeavesWhileACallerWaitsIsNoticedOnceTheCallerStops() throws Exception {
+    Handler h = new Handler();
+    Link link = started(h);
+    borrow(link);
+    far[0].close();
+    // The caller cannot tell an end from silence without blocking; its wait is short, and the
+    // link's thread, reading again, finds the end.
+    link.readFor(h.reply, in(Duration.ofMillis(1)));
+    link.role.giveBack(!h.reply.isDone());
+    Deadline.await(WAIT, link::isClosed, "the link to close");
+    assertEndedOnce(link, h, "connection closed by lentpeer");
+  }
+
+  private static void assertEndedOnce(Link link, Handler h, String why) {
+    assertTrue(link.isClosed());
+    Deadline.await(WAIT, () -> h.closings.get() > 0 && Thread.getAllStackTraces().keySet().stream()
+        .noneMatch(t -> t.getName().equals("trade-link-lentpeer")), "the link's threads to end");
+    assertEquals(1, h.closings.get(), "times the handler heard of the end");
+    assertEquals(why, h.why);
+  }
+}

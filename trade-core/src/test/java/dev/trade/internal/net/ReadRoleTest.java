@@ -1,0 +1,75 @@
+package dev.trade.internal.net;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.time.Duration;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+
+/**
+ * Who reads a link: a caller reads only while the link's thread lends it reading, and one at a
+ * time; the link's thread reads again once callers stop, at once when one stops early while others
+ * are about or when the link closes; a hand-off or the link's end releases it for good.
+ */
+@Timeout(30)
+class ReadRoleTest {
+  private static final Duration WAIT = Duration.ofSeconds(10);
+  private final ReadRole role = new ReadRole();
+
+  /** The link's thread lends reading on a thread of its own; completes with what lend says. */
+  private CompletableFuture<Boolean> lending() {
+    CompletableFuture<Boolean> back = CompletableFuture.supplyAsync(role::lend);
+    Deadline.await(WAIT, role::isLent, "the link's thread to lend reading");
+    return back;
+  }
+
+  @Test
+  void aCallerReadsOnlyWhileReadingIsLentAndOneAtATime() throws Exception {
+    assertFalse(role.tryTake(), "taken while the link's thread reads");
+    role.borrow();
+    CompletableFuture<Boolean> back = lending();
+    assertTrue(role.tryTake());
+    assertTrue(role.isCallerReading());
+    assertFalse(role.tryTake(), "a second caller took reading too");
+    role.release();
+    role.giveBack(false);
+    assertTrue(back.get(WAIT.toMillis(), TimeUnit.MILLISECONDS), "the link's thread reads again");
+    assertFalse(role.isLent());
+    assertFalse(role.tryTake(), "taken after the link's thread took reading back");
+  }
+
+  @Test
+  void aCallerThatStopsWhileOthersAreAboutHasTheLinksThreadReadAtOnce() throws Exception {
+    role.borrow(); // a caller that goes on borrowing: alone, it would keep reading lent
+    role.borrow();
+    CompletableFuture<Boolean> back = lending();
+    role.giveBack(true); // the other stops early: its reply must not wait
+    assertTrue(back.get(WAIT.toMillis(), TimeUnit.MILLISECONDS));
+    assertTrue(role.callerWaits(), "the first caller is still counted");
+  }
+
+  @Test
+  void closingTakesReadingBackWhileCallersAreAbout() throws Exception {
+    role.borrow();
+    CompletableFuture<Boolean> back = lending();
+    role.closing();
+    assertTrue(back.get(WAIT.toMillis(), TimeUnit.MILLISECONDS), "the link's thread ends the link");
+  }
+
+  @Test
+  void aHandOffOrTheEndReleasesTheLinksThread() throws Exception {
+    role.borrow();
+    CompletableFuture<Boolean> back = lending();
+    role.takenOver(); // another thread reads now
+    assertFalse(back.get(WAIT.toMillis(), TimeUnit.MILLISECONDS));
+    back = lending();
+    assertTrue(role.tryTake());
+    role.ended(); // the caller found the link broken
+    assertFalse(back.get(WAIT.toMillis(), TimeUnit.MILLISECONDS));
+    assertEquals(false, role.tryTake(), "taken after the end");
+  }
+}
