@@ -240,7 +240,9 @@ final class Link {
 
   /**
    * A caller reads the link until its reply is done (and the frames read with it are handed
-   * out) or its time is up; spinning, not blocking, so that it can stop in time.
+   * out) or its time is up. It hands out only frames that have arrived whole and never blocks in
+   * a read, so that it stops in time, whatever the peer sends; the end of the stream, or a frame
+   * larger than the buffer, is left to the link's thread.
    *
    * @return null when it stops reading, {@link #MOVED} if reading went on in another thread,
    *     else why the link ends
@@ -248,15 +250,13 @@ final class Link {
   private String readLent(CompletableFuture<?> reply, long until) {
     try {
       while (!closed.get()) {
-        boolean whole = input.holdsWholeFrame();
-        if (!whole && (reply.isDone() || System.nanoTime() - until >= 0)) {
-          return endBurst() ? null : MOVED;
-        }
-        if (whole || input.available() > 0) {
+        if (input.fillWithoutBlocking()) {
           String why = readOne(true);
           if (why != null) {
             return why;
           }
+        } else if (reply.isDone() || System.nanoTime() - until >= 0) {
+          return endBurst() ? null : MOVED;
         } else {
           Thread.onSpinWait();
         }

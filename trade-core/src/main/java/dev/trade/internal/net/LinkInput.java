@@ -155,6 +155,32 @@ final class LinkInput extends BufferedInputStream {
     return wholeFrame(buf, pos, count);
   }
 
+  /**
+   * Moves into the buffer what the socket holds already, without blocking, for a reader that must
+   * not block (a caller that reads its own reply, which has a deadline).
+   *
+   * @return whether a whole frame is buffered now; never for a frame larger than the buffer
+   */
+  synchronized boolean fillWithoutBlocking() throws IOException {
+    if (wholeFrame(buf, pos, count)) {
+      return true;
+    }
+    int ready = in.available();
+    if (ready <= 0) {
+      return false; // nothing, or the end of the stream, which a blocking read will find
+    }
+    if (buf.length - count < ready && pos > 0) {
+      System.arraycopy(buf, pos, buf, 0, count - pos); // make room; marks are never used here
+      count -= pos;
+      pos = 0;
+    }
+    int n = in.read(buf, count, Math.min(ready, buf.length - count));
+    if (n > 0) {
+      count += n;
+    }
+    return wholeFrame(buf, pos, count);
+  }
+
   private static boolean wholeFrame(byte[] b, int p, int c) {
     if (b == null || p < 0 || c > b.length || c - p < 4) {
       return false; // also a torn read by another thread
