@@ -138,10 +138,12 @@ def main():
     loads = [(n, d.get("load_average_before"), d.get("load_average_after"))
              for n, d in (("remote", remote), ("lifecycle", life), ("scale", scale)) if d]
     w("- 1-minute load average before/after each part: " + ", ".join(f"{n} {b}/{a}" for n, b, a in loads)
-      + ". A load above the 2 cores means other processes (other engineers' builds on this shared "
-      "machine) competed for the CPU: absolute µs are then noisy and inflated, most for the systems "
-      "that hand each call between several threads. Compare **ratios from the same run**; rounds "
-      "are interleaved so that noise spreads over all systems alike.\n")
+      + ". The load after a part counts the part's own threads (64 callers, 100 containers' "
+      "threads, and the 1-minute average decays slowly into the next part); a load above the 2 "
+      "cores before a part means other processes competed for the CPU: absolute µs are then noisy "
+      "and inflated, most for the systems that hand each call between several threads. The CPU of "
+      "this shared virtual machine is also not equally fast at all hours: compare **ratios from "
+      "the same run**; rounds are interleaved so that noise spreads over all systems alike.\n")
     w("## Goals\n")
     w("| goal | measured | |")
     w("|---|---|---|")
