@@ -255,8 +255,10 @@ final class Link {
           if (why != null) {
             return why;
           }
+        } else if (!endBurst()) { // what was sent while a burst was handed out leaves now
+          return MOVED; // the flush blocked and reading went on in another thread
         } else if (reply.isDone() || System.nanoTime() - until >= 0) {
-          return endBurst() ? null : MOVED;
+          return null;
         } else {
           Thread.onSpinWait();
         }

@@ -35,6 +35,8 @@ import org.junit.jupiter.api.Timeout;
 @Timeout(60)
 class LentReadingTest {
   private static final Duration WAIT = Duration.ofSeconds(10);
+  /** The last payload byte of a PING that the handler answers. */
+  private static final byte ASKS = 7;
   private final ExecutorService workers = Executors.newCachedThreadPool();
   private final List<Link> watched = new CopyOnWriteArrayList<>();
   private final ReadWatch watch = new ReadWatch(watched, workers, "lent");
@@ -56,6 +58,8 @@ class LentReadingTest {
     final CountDownLatch callMayEnd = new CountDownLatch(1);
     final AtomicInteger closings = new AtomicInteger();
     volatile String why;
+    /** Sent back for each PING that {@link #ASKS}, if set. */
+    volatile byte[] answerPings;
 
     @Override
     public boolean frame(Link link, int type, byte[] payload) {
@@ -70,6 +74,14 @@ class LentReadingTest {
         });
       }
       if (type != Wire.REPLY) {
+        byte[] answer = answerPings;
+        if (type == Wire.PING && answer != null && payload[7] == ASKS) {
+          try {
+            link.send(answer); // as a reply to a call would be sent
+          } catch (IOException e) {
+            throw new java.io.UncheckedIOException(e);
+          }
+        }
         return true;
       }
       replyReaders.add(Thread.currentThread());
@@ -92,10 +104,18 @@ class LentReadingTest {
   }
 
   private void sendFromFar(int type) throws IOException {
-    ByteSink out = Frames.start(type, 8);
-    out.writeLong(42);
-    far[0].getOutputStream().write(Frames.finish(out));
+    far[0].getOutputStream().write(frameOf(type));
     far[0].getOutputStream().flush();
+  }
+
+  private static byte[] frameOf(int type) {
+    return frameOf(type, 42);
+  }
+
+  private static byte[] frameOf(int type, long payload) {
+    ByteSink out = Frames.start(type, 8);
+    out.writeLong(payload);
+    return Frames.finish(out);
   }
 
   /**
@@ -156,6 +176,33 @@ class LentReadingTest {
     } finally {
       h.callMayEnd.countDown();
     }
+  }
+
+  @Test
+  void whatIsSentWhileACallerHandsOutABurstLeavesWhileItWaitsOn() throws Exception {
+    Handler h = new Handler();
+    Link link = started(h);
+    borrow(link);
+    h.answerPings = frameOf(Wire.PING);
+    Future<?> caller = workers.submit(() -> {
+      link.readFor(h.reply, in(WAIT));
+      link.role.giveBack(!h.reply.isDone());
+    });
+    Deadline.await(WAIT, link.role::isCallerReading, "the caller to read");
+    byte[] ping = frameOf(Wire.PING, ASKS);
+    byte[] other = frameOf(Wire.LINKS, 0); // not answered
+    byte[] two = new byte[ping.length + other.length]; // two frames in one write: a burst
+    System.arraycopy(ping, 0, two, 0, ping.length);
+    System.arraycopy(other, 0, two, ping.length, other.length);
+    far[0].getOutputStream().write(two);
+    far[0].getOutputStream().flush();
+    // The answer to the ping waits for the end of the burst; the caller, still waiting for its
+    // reply, must write it then (the far end's read fails after 5 s).
+    byte[] got = far[0].getInputStream().readNBytes(h.answerPings.length);
+    assertEquals(h.answerPings.length, got.length, "the answer arrived");
+    assertFalse(caller.isDone(), "the caller still waits for its reply");
+    sendFromFar(Wire.REPLY);
+    caller.get(WAIT.toMillis(), TimeUnit.MILLISECONDS);
   }
 
   @Test
