@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trade.internal.codec.ByteSink;
 import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.net.Socket;
 import java.time.Duration;
 import java.util.List;
@@ -30,7 +31,8 @@ import org.junit.jupiter.api.Timeout;
  * A caller waiting for its reply over a link reads the link itself (no thread hands it the reply);
  * the link's thread reads again once callers stop; a call read by a caller is served on another
  * thread, and a frame still arriving is left to the link's thread, so the caller never waits for
- * either; a link that ends while a caller reads ends once.
+ * either; what is sent during a burst the caller hands out leaves while it waits on; a link that
+ * ends while a caller reads ends once.
  */
 @Timeout(60)
 class LentReadingTest {
@@ -79,7 +81,7 @@ class LentReadingTest {
           try {
             link.send(answer); // as a reply to a call would be sent
           } catch (IOException e) {
-            throw new java.io.UncheckedIOException(e);
+            throw new UncheckedIOException(e);
           }
         }
         return true;
