@@ -111,7 +111,7 @@ final class Link {
    * Sends one complete frame (header included). Returns once the frame is written or handed to the
    * thread that is writing.
    *
-   * @throws IOException when the link is closed or the write fails (the link is then closed)
+   * @throws IOException when the link is closed or the write fails (see {@link #writeFailed})
    */
   void send(byte[] frame) throws IOException {
     queue(frame);
@@ -140,8 +140,9 @@ final class Link {
   }
 
   /**
-   * Ends a burst and writes what was sent during it (reading thread, before it may block in a
-   * read). Guarded like a served call: should the peer not read (its reader busy writing to us),
+   * Ends a burst and writes what was sent during it (whoever reads, when nothing whole is left to
+   * hand out: before the link's thread blocks in a read, or while a caller waits on). Guarded
+   * like a served call: should the peer not read (its reader busy writing to us),
    * the watch hands reading to another thread after a tick, so two links that write to each other
    * cannot wait for each other for ever.
    *
