@@ -225,7 +225,8 @@ final class Link {
    * call, and calls {@link ReadRole#giveBack} after this.
    */
   void readFor(CompletableFuture<?> reply, long until) {
-    while (!reply.isDone() && System.nanoTime() - until < 0) {
+    // A closed link brings no reply; the caller is failed from elsewhere (see LinkHandler#closed).
+    while (!reply.isDone() && !closed.get() && System.nanoTime() - until < 0) {
       if (role.tryTake()) {
         String why = readLent(reply, until);
         if (why == null) {

@@ -213,13 +213,13 @@ class LentReadingTest {
     Link link = started(h);
     borrow(link);
     Future<?> caller = workers.submit(() -> {
-      link.readFor(h.reply, in(WAIT));
+      link.readFor(h.reply, in(Duration.ofMinutes(2))); // its reply never comes
       link.role.giveBack(!h.reply.isDone());
     });
     Deadline.await(WAIT, link.role::isCallerReading, "the caller to read");
     far[0].getOutputStream().write(new byte[] {0, 0, 0, 1, 0}); // a frame shorter than allowed
     far[0].getOutputStream().flush();
-    caller.get(WAIT.toMillis(), TimeUnit.MILLISECONDS);
+    caller.get(WAIT.toMillis(), TimeUnit.MILLISECONDS); // it stops once the link has ended
     assertEndedOnce(link, h, "malformed frame from lentpeer: length 1 (limit MAXFRAMESIZE=1048576)");
   }
 
