@@ -182,24 +182,16 @@ final class Link {
     // Whichever thread reads the link carries its name, so thread dumps show who reads what.
     self.setName("trade-link-" + peerName);
     try {
-      if (first != null) {
-        if (!handler.frame(this, first.type(), first.payload())) {
-          return;
-        }
-      }
-      readFrames();
-    } catch (IOException e) {
-      end("connection to " + peerName + " lost: " + e.getMessage());
-    } catch (RuntimeException e) {
-      end("malformed frame from " + peerName + ": " + e);
+      readFrames(first);
     } finally {
       self.setName(ownName);
     }
   }
 
-  private void readFrames() {
+  private void readFrames(LinkInput.Frame first) {
     role.takenOver(); // a hand-off's new thread reads now, whoever read before
-    while (true) {
+    String why = first == null ? null : handOut(first);
+    while (why == null) {
       if (input.buffered() == 0 && role.callerWaits() && !closed.get()) {
         // A lone caller waits for its reply over this link: it reads the reply itself.
         if (!endBurst() || !role.lend()) {
@@ -207,14 +199,10 @@ final class Link {
         }
         continue;
       }
-      String why = readOne(false);
-      if (why == MOVED) {
-        return;
-      }
-      if (why != null) {
-        end(why);
-        return;
-      }
+      why = readOne(false);
+    }
+    if (why != MOVED) {
+      end(why);
     }
   }
 
@@ -267,7 +255,7 @@ final class Link {
       }
       return "closed";
     } catch (IOException e) {
-      return "connection to " + peerName + " lost: " + e.getMessage();
+      return lost(e);
     }
   }
 
@@ -280,6 +268,7 @@ final class Link {
    *     the link ends
    */
   private String readOne(boolean lent) {
+    LinkInput.Frame f;
     try {
       if (closed.get()) {
         return "closed";
@@ -287,31 +276,51 @@ final class Link {
       if (!input.holdsWholeFrame() && !endBurst()) {
         return MOVED; // the flush blocked and reading went on in another thread
       }
-      LinkInput.Frame f = input.readFrame();
-      if (f == null) {
-        return null; // a copy, dropped
-      }
-      output.burst(input.holdsWholeFrame()); // more to hand out after this one
-      if (lent && f.type() == Wire.CALL) {
-        role.takenOver();
-        return watch.read(() -> readLoop(f)) ? MOVED : "container closing";
-      }
-      return handler.frame(this, f.type(), f.payload()) ? null : MOVED;
+      f = input.readFrame();
     } catch (LinkInput.Broken e) {
       return e.getMessage();
     } catch (IOException e) {
-      return "connection to " + peerName + " lost: " + e.getMessage();
+      return lost(e);
     } catch (RuntimeException e) {
-      return "malformed frame from " + peerName + ": " + e;
+      return malformed(e);
     }
+    if (f == null) {
+      return null; // a copy, dropped
+    }
+    output.burst(input.holdsWholeFrame()); // more to hand out after this one
+    if (lent && f.type() == Wire.CALL) {
+      role.takenOver();
+      return watch.read(() -> readLoop(f)) ? MOVED : "container closing";
+    }
+    return handOut(f);
+  }
+
+  /** Hands a frame to the handler; answers as {@link #readOne} does. */
+  private String handOut(LinkInput.Frame f) {
+    try {
+      return handler.frame(this, f.type(), f.payload()) ? null : MOVED;
+    } catch (IOException e) {
+      return lost(e);
+    } catch (RuntimeException e) {
+      return malformed(e);
+    }
+  }
+
+  private String lost(IOException e) {
+    return "connection to " + peerName + " lost: " + e.getMessage();
+  }
+
+  private String malformed(RuntimeException e) {
+    return "malformed frame from " + peerName + ": " + e;
   }
 
   /** The reading thread's end: closes the link and tells the handler why. */
   private void end(String reason) {
     role.ended();
     String closedHere = closeReason; // closed while we read (silence, goodbye...): that is why
-    close(closedHere != null ? closedHere : reason);
-    handler.closed(this, closedHere != null ? closedHere : reason);
+    String why = closedHere != null ? closedHere : reason;
+    close(why);
+    handler.closed(this, why);
   }
 
   /**
