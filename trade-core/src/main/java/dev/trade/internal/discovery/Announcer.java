@@ -57,6 +57,11 @@ final class Announcer {
   private final Map<String, String> states = new HashMap<>();
   // Guarded by lock: what each interface announces, as last worked out; see plan(int).
   private final Plan[] plans;
+  // Guarded by lock: each interface's packet template, and the plan it and the last log line of
+  // a successful send were made for (see announce).
+  private final Packets.Template[] templates;
+  private final Plan[] templated;
+  private final Plan[] noted;
   private volatile boolean on; // Written under lock.
   private boolean closed; // Guarded by lock.
 
@@ -78,6 +83,9 @@ final class Announcer {
     this.interfaces = List.copyOf(interfaces);
     this.channels = List.copyOf(channels);
     this.plans = new Plan[this.interfaces.size()];
+    this.templates = new Packets.Template[plans.length];
+    this.templated = new Plan[plans.length];
+    this.noted = new Plan[plans.length];
     this.on = on;
     this.ownScheduler = scheduler == null;
     this.scheduler = scheduler != null ? scheduler : Executors.newSingleThreadScheduledExecutor(r -> {
@@ -207,17 +215,28 @@ final class Announcer {
             ? "no listen addresses" : "none of the listen addresses " + Announcement.format(listen) + " is on it"));
         return;
       }
-      Announcement a = new Announcement(Packets.VERSION, systemId, containerId, containerName,
-          mine, sequence.incrementAndGet(), System.currentTimeMillis());
       try {
+        // The text is checked and encoded once per plan (at most once a second), not per packet:
+        // while a system of 100 starts, a container answers a newcomer every few milliseconds.
+        if (templated[i] != plan) {
+          templates[i] = new Packets.Template(new Announcement(Packets.VERSION, systemId,
+              containerId, containerName, mine, 1, 0));
+          templated[i] = plan;
+        }
+        byte[] packet = templates[i].packet(sequence.incrementAndGet(), System.currentTimeMillis(),
+            signer);
         // Non-blocking (the receiver reads answers from this channel): 0 means no room just now,
         // and the packet is lost, as a datagram may be anyway.
-        if (channels.get(i).send(ByteBuffer.wrap(Packets.encode(a, signer)), to) == 0) {
+        if (channels.get(i).send(ByteBuffer.wrap(packet), to) == 0) {
           throw new IOException("the socket's send buffer is full");
         }
         sent.increment();
-        note(nif, Level.INFO, "announcing " + Announcement.format(mine) + " as '" + containerName + "'");
+        if (noted[i] != plan) {
+          note(nif, Level.INFO, "announcing " + Announcement.format(mine) + " as '" + containerName + "'");
+          noted[i] = plan;
+        }
       } catch (IOException | RuntimeException e) {
+        noted[i] = null; // the next success is news
         note(nif, Level.WARNING, "cannot send: " + e);
       }
     }

@@ -88,19 +88,43 @@ final class Packets {
   }
 
   static byte[] encode(Announcement a, Signer signer) {
-    ByteBuffer b = ByteBuffer.allocate(MAX_PACKET);
-    b.put(MAGIC).put((byte) VERSION);
-    putText(b, a.systemId());
-    b.putLong(a.sequence()).putLong(a.timestampMillis());
-    putText(b, a.containerId());
-    putText(b, a.containerName());
-    b.put((byte) a.addresses().size());
-    for (InetSocketAddress s : a.addresses()) {
-      byte[] raw = s.getAddress().getAddress();
-      b.put((byte) (raw.length == 4 ? 4 : 6)).put(raw).putShort((short) s.getPort());
+    return new Template(a).packet(a.sequence(), a.timestampMillis(), signer);
+  }
+
+  /**
+   * The bytes of one container's announcement but for its sequence number, timestamp and HMAC,
+   * which {@link #packet} fills in. A container sends the same announcement again and again (in
+   * its start burst, every interval, to each newcomer: about a hundred answers while a system of
+   * 100 starts), so its text is checked and encoded once, not per packet. Immutable.
+   */
+  static final class Template {
+    private final byte[] unsigned;
+    private final int sequenceAt;
+
+    /** @param a checked by its constructor; its sequence and timestamp are not used */
+    Template(Announcement a) {
+      ByteBuffer b = ByteBuffer.allocate(MAX_PACKET);
+      b.put(MAGIC).put((byte) VERSION);
+      putText(b, a.systemId());
+      sequenceAt = b.position();
+      b.putLong(0).putLong(0);
+      putText(b, a.containerId());
+      putText(b, a.containerName());
+      b.put((byte) a.addresses().size());
+      for (InetSocketAddress s : a.addresses()) {
+        byte[] raw = s.getAddress().getAddress();
+        b.put((byte) (raw.length == 4 ? 4 : 6)).put(raw).putShort((short) s.getPort());
+      }
+      unsigned = Arrays.copyOf(b.array(), b.position());
     }
-    b.put(signer.sign(b.array(), b.position()));
-    return Arrays.copyOf(b.array(), b.position());
+
+    /** The signed packet with {@code sequence} and {@code timestampMillis}. */
+    byte[] packet(long sequence, long timestampMillis, Signer signer) {
+      byte[] packet = Arrays.copyOf(unsigned, unsigned.length + MAC_LENGTH);
+      ByteBuffer.wrap(packet).putLong(sequenceAt, sequence).putLong(sequenceAt + 8, timestampMillis);
+      System.arraycopy(signer.sign(packet, unsigned.length), 0, packet, unsigned.length, MAC_LENGTH);
+      return packet;
+    }
   }
 
   /**

@@ -96,9 +96,6 @@ final class Tables {
    * @param moved the containers whose distance changed, with the new one
    */
   void follow(Map<String, Topology.Route> routes, Map<String, Integer> moved, long nowNanos) {
-    if (!moved.isEmpty()) {
-      registry.updateDistances(moved);
-    }
     for (String owner : registry.remoteContainers()) {
       if (!routes.containsKey(owner)) {
         LOG.log(Level.INFO, "container {0} left or is not reachable any more", owner);
@@ -119,10 +116,11 @@ final class Tables {
         distances.put(t.containerId(), r.distance());
       }
     }
-    if (!listed.isEmpty()) {
-      registry.applyTables(listed, distances);
+    if (!moved.isEmpty() || !listed.isEmpty()) {
+      registry.followRoutes(moved, listed, distances);
     }
   }
+
 
   /** Forgets tables that waited longer than the grace period. */
   void prune(long nowNanos) {

@@ -185,6 +185,11 @@ public final class Registry {
    * @return true when any was applied (the caller floods those on), false when all were stale
    */
   public synchronized boolean applyTables(List<Table> tables, Map<String, Integer> distances) {
+    return applyTables(tables, distances, false);
+  }
+
+  /** As {@link #applyTables(List, Map)}; {@code moved}: a new snapshot is due anyway. */
+  private boolean applyTables(List<Table> tables, Map<String, Integer> distances, boolean moved) {
     List<Entry> added = new ArrayList<>();
     List<Entry> removed = new ArrayList<>();
     boolean changed = false;
@@ -193,6 +198,8 @@ public final class Registry {
     }
     if (changed) {
       publish(added, removed);
+    } else if (moved) {
+      snapshot = Snapshot.of(this.tables);
     }
     return changed;
   }
@@ -295,28 +302,31 @@ public final class Registry {
   }
 
   /**
-   * Updates how far the given containers are (reorders lookups; no joined/left events); others
-   * keep theirs.
+   * Follows newly computed routes in one step: moves the containers in {@code moved} to their new
+   * distances (reorders lookups; no joined/left events; others keep theirs) and applies
+   * {@code tables} as {@link #applyTables} does. One snapshot serves both: routing does both after
+   * most computations while a system grows, and each snapshot copies every entry.
+   *
+   * @param distances the distance of each table's owner
    */
-  public synchronized void updateDistances(Map<String, Integer> distances) {
+  public synchronized void followRoutes(Map<String, Integer> moved, List<Table> tables,
+      Map<String, Integer> distances) {
     boolean changed = false;
-    for (Map.Entry<String, Integer> owner : distances.entrySet()) {
-      Map<Long, Entry> table = tables.get(owner.getKey());
+    for (Map.Entry<String, Integer> owner : moved.entrySet()) {
+      Map<Long, Entry> table = this.tables.get(owner.getKey());
       if (table == null || owner.getKey().equals(containerId)) {
         continue;
       }
       int d = owner.getValue();
       for (Map.Entry<Long, Entry> e : table.entrySet()) {
-        Entry moved = e.getValue().withDistance(d);
-        if (moved != e.getValue()) {
-          e.setValue(moved);
+        Entry m = e.getValue().withDistance(d);
+        if (m != e.getValue()) {
+          e.setValue(m);
           changed = true;
         }
       }
     }
-    if (changed) {
-      snapshot = Snapshot.of(tables);
-    }
+    applyTables(tables, distances, changed);
   }
 
   /** A container's table of services at a version. */

@@ -44,6 +44,21 @@ class PacketsTest {
   }
 
   @Test
+  void aTemplateFillsInSequenceAndTimestampAndSignsEachPacket() throws BadPacketException {
+    Announcement a = new Announcement(1, "diarc", "c1", "arm",
+        List.of(address("192.168.1.20", 10002), address("fd00::1", 10003)), 7, 1700000000000L);
+    Packets.Template template = new Packets.Template(a);
+    Signer signer = new Signer(KEY);
+    for (long seq : new long[] {1, 2, Long.MAX_VALUE}) {
+      long ts = 1700000000000L + seq % 1000;
+      Announcement b = new Announcement(1, "diarc", "c1", "arm", a.addresses(), seq, ts);
+      byte[] packet = template.packet(seq, ts, signer);
+      assertArrayEquals(b.encode(KEY), packet);
+      assertEquals(b, Announcement.decode(packet, packet.length, "diarc", KEY));
+    }
+  }
+
+  @Test
   void roundTripsEveryField() throws BadPacketException {
     Announcement a = new Announcement(1, "système", "id-é", "Arm 🤖 left",
         List.of(address("10.0.0.5", 1), address("2001:db8::7", 65535)), Long.MAX_VALUE, 0);

@@ -56,4 +56,26 @@ class RegistryTablesTest {
     assertEquals(1, named("x").size(), "a's table of version 2 stays");
     assertTrue(named("old").isEmpty());
   }
+
+  @Test
+  void routesAreFollowedWithOneChangeForMovesAndNewTables() {
+    registry.applyTables(List.of(table("a", 1, "x"), table("b", 1, "x")), Map.of("a", 3, "b", 1));
+    assertEquals(List.of("b", "a"), owners(named("x")), "nearest first");
+    calls.clear();
+
+    registry.followRoutes(Map.of("a", 1, "b", 2, "unknown", 1), List.of(table("c", 1, "x")),
+        Map.of("c", 2));
+    assertEquals(1, calls.size(), "one change for the moves and the new table");
+    assertEquals(List.of("c"), owners(calls.get(0)), "only the new table's services are added");
+    assertEquals(List.of("a", "b", "c"), owners(named("x")), "a moved nearer, b farther");
+    assertEquals(List.of(1, 2, 2), named("x").stream().map(Entry::distance).toList());
+
+    registry.followRoutes(Map.of("c", 1), List.of(), Map.of());
+    assertEquals(1, calls.size(), "a move alone is no change for the listeners");
+    assertEquals(List.of("a", "c", "b"), owners(named("x")), "but lookups see it");
+  }
+
+  private static List<String> owners(List<Entry> entries) {
+    return entries.stream().map(e -> e.descriptor().containerId()).toList();
+  }
 }
