@@ -143,7 +143,15 @@ def main():
       "cores before a part means other processes competed for the CPU: absolute µs are then noisy "
       "and inflated, most for the systems that hand each call between several threads. The CPU of "
       "this shared virtual machine is also not equally fast at all hours: compare **ratios from "
-      "the same run**; rounds are interleaved so that noise spreads over all systems alike.\n")
+      "the same run**; rounds are interleaved so that noise spreads over all systems alike.")
+    speeds = [(n, d.get("cpu_index_ms")) for n, d in
+              (("remote", remote), ("lifecycle", life), ("scale", scale)) if d and d.get("cpu_index_ms")]
+    if speeds:
+        w("- CPU speed index before each part (`Calibration`: one fixed single-threaded Java workload, "
+          "median of 5 runs; lower is faster): " + ", ".join(f"{n} {v:.0f} ms" for n, v in speeds)
+          + ". It tells how fast the machine was when a goal stated in absolute time (start → callable, "
+          "convergence) was measured, so that runs of different hours can be compared.")
+    w("")
     w("## Goals\n")
     w("| goal | measured | |")
     w("|---|---|---|")

@@ -27,6 +27,7 @@ public final class BenchMain {
     Json json = new Json().begin();
     json.field("quick", quick);
     json.field("load_average_before", loadAverage());
+    json.field("cpu_index_ms", Calibration.medianMillis());
     long started = System.nanoTime();
     switch (args[0]) {
       case "remote" -> {
