@@ -148,7 +148,7 @@ def main():
               (("remote", remote), ("lifecycle", life), ("scale", scale)) if d and d.get("cpu_index_ms")]
     if speeds:
         w("- CPU speed index before each part (`Calibration`: one fixed single-threaded Java workload, "
-          "median of 5 runs; lower is faster): " + ", ".join(f"{n} {v:.0f} ms" for n, v in speeds)
+          "median of 7 runs after 5 to warm up; lower is faster): " + ", ".join(f"{n} {v:.0f} ms" for n, v in speeds)
           + ". It tells how fast the machine was when a goal stated in absolute time (start → callable, "
           "convergence) was measured, so that runs of different hours can be compared.")
     w("")
