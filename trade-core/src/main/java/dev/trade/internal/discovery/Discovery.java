@@ -17,6 +17,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.concurrent.ScheduledExecutorService;
+import java.util.function.Predicate;
 import java.util.function.Supplier;
 
 /**
@@ -106,7 +107,11 @@ public final class Discovery implements AutoCloseable {
     this.announcer = new Announcer(b.systemId, b.containerId, b.containerName, key, target,
         b.addresses, interfaces, senders, b.broadcast, b.scheduler, "trade-discovery-send" + tag);
     this.receiver = new Receiver(senders, b.systemId, b.containerId, key, b.listener,
-        announcer::answer, b.observer, b.maxClockSkew, b.reportInterval, b.discovery);
+        (a, from) -> {
+          if (b.answering.test(a.containerId())) {
+            announcer.answer(from);
+          }
+        }, b.observer, b.maxClockSkew, b.reportInterval, b.discovery);
     try {
       receiver.start(family, target, interfaces);
     } catch (IOException | RuntimeException e) {
@@ -221,6 +226,7 @@ public final class Discovery implements AutoCloseable {
     private Duration reportInterval = Duration.ofSeconds(60);
     private Receiver.Observer observer = Receiver.Observer.NONE;
     private ScheduledExecutorService scheduler;
+    private Predicate<String> answering = newcomer -> true;
 
     private Builder() {}
 
@@ -338,6 +344,16 @@ public final class Discovery implements AutoCloseable {
      */
     public Builder scheduler(ScheduledExecutorService scheduler) {
       this.scheduler = Objects.requireNonNull(scheduler, "scheduler == null");
+      return this;
+    }
+
+    /**
+     * Which newcomers, by container id, this container answers at their first announcement, so
+     * that they learn of it at once rather than at its next announcement to the group. Asked on
+     * the receiving thread: it must be quick. Default: every one.
+     */
+    public Builder answering(Predicate<String> newcomer) {
+      this.answering = Objects.requireNonNull(newcomer, "newcomer == null");
       return this;
     }
 

@@ -15,7 +15,7 @@ import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.LongAdder;
 import java.util.concurrent.locks.ReentrantLock;
-import java.util.function.Consumer;
+import java.util.function.BiConsumer;
 
 /**
  * The listening half of {@link Discovery}: checks the group's datagrams, and the answers other
@@ -78,7 +78,7 @@ final class Receiver {
   private final byte[] key;
   private final Signer signer; // delivering thread only
   private final Discovery.Listener listener;
-  private final Consumer<InetSocketAddress> newSender;
+  private final BiConsumer<Announcement, InetSocketAddress> newSender;
   private final Observer observer;
   private final ReplayGuard replay;
   private final Drops drops;
@@ -92,11 +92,12 @@ final class Receiver {
   /**
    * @param answers the sending channels, where answers to this container's announcements arrive;
    *     read while this receiver listens, closed by their owner
-   * @param newSender told (on the receive thread) the source of an accepted announcement from a
-   *     container not heard before; must be quick
+   * @param newSender told (on the receive thread) of an accepted announcement from a container not
+   *     heard before, and its source; must be quick
    */
   Receiver(List<DatagramChannel> answers, String systemId, String containerId, byte[] key,
-      Discovery.Listener listener, Consumer<InetSocketAddress> newSender, Observer observer,
+      Discovery.Listener listener, BiConsumer<Announcement, InetSocketAddress> newSender,
+      Observer observer,
       Duration maxClockSkew, Duration reportInterval, boolean on) {
     this.answers = List.copyOf(answers);
     this.systemId = systemId;
@@ -210,7 +211,7 @@ final class Receiver {
     }
     LOG.log(Level.DEBUG, "Heard {0} from {1}", a, from);
     if (isNew) {
-      newSender.accept(from);
+      newSender.accept(a, from);
     }
     try {
       listener.heard(a, from.getAddress());

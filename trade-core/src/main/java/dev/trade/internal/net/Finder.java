@@ -92,6 +92,7 @@ final class Finder implements AutoCloseable {
         .container(self.toString(), name)
         .addresses(() -> concrete(listening.get()))
         .listener(this::heard)
+        .answering(this::answers)
         .broadcast(broadcast)
         .discovery(discover)
         .scheduler(timer)
@@ -161,6 +162,32 @@ final class Finder implements AutoCloseable {
     } else if (wanted.contains(peer)) {
       consider(peer);
     }
+  }
+
+  /**
+   * Whether to answer {@code newcomer}'s first announcement (see {@link Discovery.Builder#answering}):
+   * when its overlay, knowing the containers this one knows, would dial this container, and always
+   * in a fully meshed system. A newcomer dials only those; answered by every container, a newcomer
+   * to a system of 100 drew 99 answers, each signed, sent, received and checked, and each woke a
+   * thread in the JVM that sent it. It hears the others at their next announcement to the group.
+   * Runs on the receiving thread.
+   */
+  private boolean answers(String newcomer) {
+    UUID peer;
+    try {
+      peer = UUID.fromString(newcomer);
+    } catch (IllegalArgumentException e) {
+      return true; // not one of ours to reason about: answer as discovery always did
+    }
+    return answers(self, peer, known.keySet());
+  }
+
+  /** The rule of {@link #answers(String)}: whether {@code self}, knowing {@code known}, answers. */
+  static boolean answers(UUID self, UUID newcomer, Collection<UUID> known) {
+    Set<UUID> members = new HashSet<>(known);
+    members.add(newcomer);
+    members.add(self);
+    return members.size() <= Overlay.FULL_MESH_MAX || Overlay.chooses(newcomer, self, members);
   }
 
   /**

@@ -47,7 +47,7 @@ class GroupSocketTest {
 
   private static Receiver receiver(String id, List<DatagramChannel> answers,
       Discovery.Listener listener, Receiver.Observer observer) {
-    return new Receiver(answers, SYSTEM, id, KEY, listener, from -> { }, observer,
+    return new Receiver(answers, SYSTEM, id, KEY, listener, (a, from) -> { }, observer,
         Duration.ofSeconds(30), Duration.ofSeconds(60), true);
   }
 

@@ -77,6 +77,6 @@ class ReceiverTest {
 
   private Receiver receiver(Discovery.Listener listener) throws IOException {
     return new Receiver(List.of(), SYSTEM, "me", KEY, listener,
-        from -> newcomers.incrementAndGet(), recorder, Duration.ofSeconds(30), Duration.ofSeconds(60), true);
+        (a, from) -> newcomers.incrementAndGet(), recorder, Duration.ofSeconds(30), Duration.ofSeconds(60), true);
   }
 }

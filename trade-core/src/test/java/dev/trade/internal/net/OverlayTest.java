@@ -19,7 +19,7 @@ import org.junit.jupiter.api.Test;
 
 /** Which containers a container dials ({@link Overlay}). */
 class OverlayTest {
-  private static List<UUID> ids(int n, long seed) {
+  static List<UUID> ids(int n, long seed) {
     Random r = new Random(seed);
     List<UUID> result = new ArrayList<>();
     for (int i = 0; i < n; i++) {
