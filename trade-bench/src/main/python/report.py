@@ -8,7 +8,6 @@ import json
 import os
 import statistics
 import sys
-from datetime import datetime, timezone
 
 SYSTEMS = ["raw-tcp", "rmi", "grpc", "jgroups", "trade"]
 LABELS = {"raw-tcp": "raw TCP", "rmi": "JDK RMI", "grpc": "gRPC-java", "jgroups": "JGroups", "trade": "TRADE"}
@@ -133,7 +132,10 @@ def main():
     w("## Machine and run\n")
     w(f"- {machine.get('cores', '?')} cores ({machine.get('cpu', '?')}), {machine.get('memory_gb', '?')} GB, "
       f"{machine.get('os', '?')}; {machine.get('jdk', '?')}.")
-    w(f"- Run: {datetime.now(timezone.utc).strftime('%Y-%m-%d %H:%M UTC')}, wall time {wall} s"
+    # When the run ended (src/run-benchmarks writes ended.txt), not when this page was generated.
+    ended = os.path.join(res, "ended.txt")
+    when = open(ended).read().strip() if os.path.exists(ended) else "?"
+    w(f"- Run: {when}, wall time {wall} s"
       f"{' (quick smoke run: numbers mean little)' if remote.get('quick') else ''}.")
     loads = [(n, d.get("load_average_before"), d.get("load_average_after"))
              for n, d in (("remote", remote), ("lifecycle", life), ("scale", scale)) if d]
