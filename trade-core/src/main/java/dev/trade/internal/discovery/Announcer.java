@@ -57,11 +57,6 @@ final class Announcer {
   private final Map<String, String> states = new HashMap<>();
   // Guarded by lock: what each interface announces, as last worked out; see plan(int).
   private final Plan[] plans;
-  // Guarded by lock: each interface's packet template, and the plan it and the last log line of
-  // a successful send were made for (see announce).
-  private final Packets.Template[] templates;
-  private final Plan[] templated;
-  private final Plan[] noted;
   private volatile boolean on; // Written under lock.
   private boolean closed; // Guarded by lock.
 
@@ -83,9 +78,6 @@ final class Announcer {
     this.interfaces = List.copyOf(interfaces);
     this.channels = List.copyOf(channels);
     this.plans = new Plan[this.interfaces.size()];
-    this.templates = new Packets.Template[plans.length];
-    this.templated = new Plan[plans.length];
-    this.noted = new Plan[plans.length];
     this.on = on;
     this.ownScheduler = scheduler == null;
     this.scheduler = scheduler != null ? scheduler : Executors.newSingleThreadScheduledExecutor(r -> {
@@ -207,9 +199,9 @@ final class Announcer {
       if (plan == null) {
         return;
       }
-      NetworkInterface nif = plan.nif();
-      List<InetSocketAddress> listen = plan.listen();
-      List<InetSocketAddress> mine = plan.mine();
+      NetworkInterface nif = plan.nif;
+      List<InetSocketAddress> listen = plan.listen;
+      List<InetSocketAddress> mine = plan.mine;
       if (mine.isEmpty()) {
         note(nif, Level.INFO, "nothing to announce: " + (listen.isEmpty()
             ? "no listen addresses" : "none of the listen addresses " + Announcement.format(listen) + " is on it"));
@@ -218,12 +210,11 @@ final class Announcer {
       try {
         // The text is checked and encoded once per plan (at most once a second), not per packet:
         // while a system of 100 starts, a container answers a newcomer every few milliseconds.
-        if (templated[i] != plan) {
-          templates[i] = new Packets.Template(new Announcement(Packets.VERSION, systemId,
+        if (plan.template == null) {
+          plan.template = new Packets.Template(new Announcement(Packets.VERSION, systemId,
               containerId, containerName, mine, 1, 0));
-          templated[i] = plan;
         }
-        byte[] packet = templates[i].packet(sequence.incrementAndGet(), System.currentTimeMillis(),
+        byte[] packet = plan.template.packet(sequence.incrementAndGet(), System.currentTimeMillis(),
             signer);
         // Non-blocking (the receiver reads answers from this channel): 0 means no room just now,
         // and the packet is lost, as a datagram may be anyway.
@@ -231,20 +222,39 @@ final class Announcer {
           throw new IOException("the socket's send buffer is full");
         }
         sent.increment();
-        if (noted[i] != plan) {
+        if (!plan.noted) {
           note(nif, Level.INFO, "announcing " + Announcement.format(mine) + " as '" + containerName + "'");
-          noted[i] = plan;
+          plan.noted = true;
         }
       } catch (IOException | RuntimeException e) {
-        noted[i] = null; // the next success is news
+        plan.noted = false; // the next success is news
         note(nif, Level.WARNING, "cannot send: " + e);
       }
     }
   }
 
-  /** What the {@code i}th interface announces: the interface, the listen addresses, those on it. */
-  private record Plan(NetworkInterface nif, List<InetSocketAddress> listen,
-      List<InetSocketAddress> mine, long at) {}
+  /**
+   * What the {@code i}th interface announces: the interface, the listen addresses, those on it.
+   * Its mutable fields are guarded by lock.
+   */
+  private static final class Plan {
+    final NetworkInterface nif;
+    final List<InetSocketAddress> listen;
+    final List<InetSocketAddress> mine;
+    final long at;
+    /** The announcement of {@link #mine} but for sequence, time and HMAC; made at the first send. */
+    Packets.Template template;
+    /** Whether a successful send with this plan has been noted (logged if news). */
+    boolean noted;
+
+    Plan(NetworkInterface nif, List<InetSocketAddress> listen, List<InetSocketAddress> mine,
+        long at) {
+      this.nif = nif;
+      this.listen = listen;
+      this.mine = mine;
+      this.at = at;
+    }
+  }
 
   /**
    * What the {@code i}th interface announces, worked out again at most once a second and after
@@ -258,7 +268,7 @@ final class Announcer {
   private Plan plan(int i) {
     long now = System.nanoTime();
     Plan plan = plans[i];
-    if (plan == null || now - plan.at() >= 1_000_000_000L) {
+    if (plan == null || now - plan.at >= 1_000_000_000L) {
       List<InetSocketAddress> listen;
       try {
         listen = List.copyOf(addresses.get());
