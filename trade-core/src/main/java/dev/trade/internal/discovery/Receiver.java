@@ -97,8 +97,7 @@ final class Receiver {
    */
   Receiver(List<DatagramChannel> answers, String systemId, String containerId, byte[] key,
       Discovery.Listener listener, BiConsumer<Announcement, InetSocketAddress> newSender,
-      Observer observer,
-      Duration maxClockSkew, Duration reportInterval, boolean on) {
+      Observer observer, Duration maxClockSkew, Duration reportInterval, boolean on) {
     this.answers = List.copyOf(answers);
     this.systemId = systemId;
     this.containerId = containerId;

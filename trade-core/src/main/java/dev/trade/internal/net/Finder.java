@@ -182,18 +182,26 @@ final class Finder implements AutoCloseable {
     return answers(self, peer, known.keySet());
   }
 
-  /** The rule of {@link #answers(String)}: whether {@code self}, knowing {@code known}, answers. */
+  /**
+   * The rule of {@link #answers(String)}: whether {@code self}, knowing {@code known} (itself not
+   * among them), answers.
+   */
   static boolean answers(UUID self, UUID newcomer, Collection<UUID> known) {
-    Set<UUID> members = new HashSet<>(known);
-    members.add(newcomer);
-    members.add(self);
-    return members.size() <= Overlay.FULL_MESH_MAX || Overlay.chooses(newcomer, self, members);
+    int members = known.size() + 1 + (known.contains(newcomer) ? 0 : 1);
+    if (members <= Overlay.FULL_MESH_MAX) {
+      return true;
+    }
+    // The overlay puts the members in a set of its own (the newcomer, its chooser, among them).
+    List<UUID> withSelf = new ArrayList<>(members);
+    withSelf.addAll(known);
+    withSelf.add(self);
+    return Overlay.chooses(newcomer, self, withSelf);
   }
 
   /**
    * Chooses again {@link #SETTLE_MS} after the first change, with every change heard until then: a
-   * newcomer hears the answers of all the others within milliseconds, and choosing at the first
-   * one would fully mesh it with whoever answered first, links that then stay. The first container
+   * newcomer hears the answers of the containers it will dial within milliseconds, and choosing at
+   * the first one would mesh it with whoever answered first, links that then stay. The first container
    * heard at all is chosen at once, so that two containers on their own link without delay.
    */
   private void membershipChanged() {
@@ -221,7 +229,8 @@ final class Finder implements AutoCloseable {
 
   /**
    * Whether a newcomer waits before choosing beyond its first contact: while a large system is
-   * busy, it hears the others' answers over seconds, and each choice made on part of them dials
+   * busy, it hears the others over seconds (answers, then announcements to the group), and each
+   * choice made on part of them dials
    * containers (ring successors above all) that a later choice with more of them does not choose,
    * links that stay. Routing tells, once the first link's states are applied, how many containers
    * there are: it waits until then (until routing reaches at least half of those heard) and until

@@ -188,8 +188,8 @@ public final class Registry {
     return applyTables(tables, distances, false);
   }
 
-  /** As {@link #applyTables(List, Map)}; {@code moved}: a new snapshot is due anyway. */
-  private boolean applyTables(List<Table> tables, Map<String, Integer> distances, boolean moved) {
+  /** As {@link #applyTables(List, Map)}, with a new snapshot even if none applies when {@code due}. */
+  private boolean applyTables(List<Table> tables, Map<String, Integer> distances, boolean due) {
     List<Entry> added = new ArrayList<>();
     List<Entry> removed = new ArrayList<>();
     boolean changed = false;
@@ -198,7 +198,7 @@ public final class Registry {
     }
     if (changed) {
       publish(added, removed);
-    } else if (moved) {
+    } else if (due) {
       snapshot = Snapshot.of(this.tables);
     }
     return changed;
