@@ -120,11 +120,12 @@ public final class Discovery implements AutoCloseable {
     }
     announcer.start(b.interval);
     // Logged after starting: the first log line of a JVM sets up its logging (tens of ms), which the
-    // announcer's own start-up (its MAC) can overlap on another core.
+    // announcer's own start-up (its MAC) can overlap on another core. The TTL goes in as text: a
+    // number makes the logger set up the locale's number format first.
     LOG.log(Level.INFO, "Discovery of ''{0}'' in system ''{1}'' on {2} via {3} ({4}, TTL {5}):"
         + " announcing {6}, listening {7}", b.containerName, b.systemId,
-        Announcement.format(target), interfaceNames(), b.range, b.range.ttl, b.broadcast,
-        b.discovery);
+        Announcement.format(target), interfaceNames(), b.range, Integer.toString(b.range.ttl),
+        b.broadcast, b.discovery);
   }
 
   /** A builder; see {@link Builder} for what is required and the defaults. */
