@@ -3,12 +3,15 @@ package dev.trade.internal.net;
 import java.io.IOException;
 import java.lang.System.Logger;
 import java.lang.System.Logger.Level;
+import java.net.InetAddress;
 import java.net.InetSocketAddress;
+import java.net.NetworkInterface;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.net.SocketException;
 import java.net.SocketTimeoutException;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
@@ -96,11 +99,39 @@ final class Connector {
     return bound;
   }
 
-  /** The concrete addresses we listen on (wildcards expanded by the caller). */
+  /** The addresses we listen on, wildcards as they are (see {@link #announceable}). */
   List<InetSocketAddress> listening() {
     List<InetSocketAddress> result = new ArrayList<>();
     for (ServerSocket s : servers) {
       result.add((InetSocketAddress) s.getLocalSocketAddress());
+    }
+    return result;
+  }
+
+  /**
+   * The addresses to announce: those we listen on, a wildcard expanded to the addresses of every
+   * up interface (link-local ones left out: their scope cannot travel).
+   */
+  List<InetSocketAddress> announceable() {
+    List<InetSocketAddress> result = new ArrayList<>();
+    for (InetSocketAddress a : listening()) {
+      if (!a.getAddress().isAnyLocalAddress()) {
+        result.add(a);
+        continue;
+      }
+      try {
+        for (NetworkInterface nif : Collections.list(NetworkInterface.getNetworkInterfaces())) {
+          if (nif.isUp()) {
+            for (InetAddress ip : Collections.list(nif.getInetAddresses())) {
+              if (!ip.isLinkLocalAddress() && ip.getClass() == a.getAddress().getClass()) {
+                result.add(new InetSocketAddress(ip, a.getPort()));
+              }
+            }
+          }
+        }
+      } catch (SocketException e) {
+        LOG.log(Level.WARNING, "cannot list network interfaces: {0}", e.getMessage());
+      }
     }
     return result;
   }

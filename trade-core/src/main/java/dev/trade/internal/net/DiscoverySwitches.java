@@ -90,7 +90,7 @@ final class DiscoverySwitches implements AutoCloseable {
   /** The finder, made with these switches if there is none yet; null once the container closed. */
   synchronized Finder finder(boolean broadcast, boolean discover) throws IOException {
     if (finder == null && !closed.getAsBoolean()) {
-      finder = new Finder(settings, self, name, connector::listening, linked, reachable,
+      finder = new Finder(settings, self, name, connector::announceable, linked, reachable,
           connector, timer, broadcast, discover);
     }
     return finder;

@@ -9,11 +9,8 @@ import java.lang.System.Logger;
 import java.lang.System.Logger.Level;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
-import java.net.NetworkInterface;
-import java.net.SocketException;
 import java.util.ArrayList;
 import java.util.Collection;
-import java.util.Collections;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
@@ -72,7 +69,7 @@ final class Finder implements AutoCloseable {
   /** When the first choice was made (nanoTime), 0 before it. Guarded by this. */
   private long firstChoiceAt;
 
-  Finder(Settings settings, UUID self, String name, Supplier<List<InetSocketAddress>> listening,
+  Finder(Settings settings, UUID self, String name, Supplier<List<InetSocketAddress>> addresses,
       Predicate<UUID> linked, IntSupplier reachable, Connector connector,
       ScheduledExecutorService timer, boolean broadcast, boolean discover) throws IOException {
     this.self = self;
@@ -90,7 +87,7 @@ final class Finder implements AutoCloseable {
             ? Discovery.Range.SUBNET : Discovery.Range.LOCALHOST)
         .interfaces(settings.discoveryInterfaces())
         .container(self.toString(), name)
-        .addresses(() -> concrete(listening.get()))
+        .addresses(addresses)
         .listener(this::heard)
         .answering(this::answers)
         .broadcast(broadcast)
@@ -347,31 +344,6 @@ final class Finder implements AutoCloseable {
     } catch (RejectedExecutionException e) {
       // The container is closing.
     }
-  }
-
-  /** Wildcard listen addresses expanded to the addresses of every up interface. */
-  private static List<InetSocketAddress> concrete(List<InetSocketAddress> listening) {
-    List<InetSocketAddress> result = new ArrayList<>();
-    for (InetSocketAddress a : listening) {
-      if (!a.getAddress().isAnyLocalAddress()) {
-        result.add(a);
-        continue;
-      }
-      try {
-        for (NetworkInterface nif : Collections.list(NetworkInterface.getNetworkInterfaces())) {
-          if (nif.isUp()) {
-            for (InetAddress ip : Collections.list(nif.getInetAddresses())) {
-              if (!ip.isLinkLocalAddress() && ip.getClass() == a.getAddress().getClass()) {
-                result.add(new InetSocketAddress(ip, a.getPort()));
-              }
-            }
-          }
-        }
-      } catch (SocketException e) {
-        LOG.log(Level.WARNING, "cannot list network interfaces: {0}", e.getMessage());
-      }
-    }
-    return result;
   }
 
   @Override
