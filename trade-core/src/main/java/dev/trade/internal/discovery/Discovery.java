@@ -45,7 +45,7 @@ import java.util.function.Supplier;
  *     .group(InetAddress.getByName("230.1.1.1"), 33333)
  *     .container(id, name)
  *     .addresses(server::listenAddresses)
- *     .listener((a, from) -> connector.offer(a))   // hands off; never blocks
+ *     .listener((a, from, answer) -> connector.offer(a))   // hands off; never blocks
  *     .start();
  * }</pre>
  *
@@ -76,8 +76,10 @@ public final class Discovery implements AutoCloseable {
      * container. An exception is logged and does not stop discovery.
      *
      * @param from the datagram's source address, for logs; connect to {@code a.addresses()}
+     * @param answer whether it came straight to this container, in answer to this container's own
+     *     announcement (see {@link Builder#answering}), rather than to the group
      */
-    void heard(Announcement a, InetAddress from);
+    void heard(Announcement a, InetAddress from, boolean answer);
   }
 
   private static final Logger LOG = System.getLogger(Discovery.class.getName());

@@ -182,18 +182,22 @@ final class Receiver {
         observer.ignored();
         return;
       }
-      handle(packet, len, from, decoded);
+      handle(packet, len, from, decoded, decoded == null);
     } finally {
       delivering.unlock();
     }
   }
 
-  /** Checks one datagram, then passes it on or drops it. Delivering thread only (or tests). */
+  /**
+   * Checks one datagram from the group, then passes it on or drops it. Delivering thread only (or
+   * tests).
+   */
   void handle(byte[] packet, int len, InetSocketAddress from) {
-    handle(packet, len, from, null);
+    handle(packet, len, from, null, false);
   }
 
-  private void handle(byte[] packet, int len, InetSocketAddress from, Decoded decoded) {
+  private void handle(byte[] packet, int len, InetSocketAddress from, Decoded decoded,
+      boolean answer) {
     Announcement a;
     boolean isNew;
     try {
@@ -213,7 +217,7 @@ final class Receiver {
       newSender.accept(a, from);
     }
     try {
-      listener.heard(a, from.getAddress());
+      listener.heard(a, from.getAddress(), answer);
     } catch (RuntimeException e) {
       LOG.log(Level.WARNING, "The discovery listener failed on " + a + "; discovery goes on", e);
     }

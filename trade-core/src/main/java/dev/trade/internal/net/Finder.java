@@ -66,6 +66,8 @@ final class Finder implements AutoCloseable {
   private final ScheduledFuture<?> sweep;
   private final AtomicBoolean choosing = new AtomicBoolean();
   private volatile Set<UUID> wanted = Set.of();
+  /** The containers that answered this one's announcements (see {@link #early}). */
+  private final Set<UUID> answered = ConcurrentHashMap.newKeySet();
   /** When the first choice was made (nanoTime), 0 before it. Guarded by this. */
   private long firstChoiceAt;
 
@@ -124,6 +126,7 @@ final class Finder implements AutoCloseable {
    * heard. Any thread.
    */
   void forget(UUID peer) {
+    answered.remove(peer);
     Heard h = known.remove(peer);
     if (h != null) {
       forgotten.put(peer, new long[] {h.announcement().sequence(), System.nanoTime()});
@@ -136,7 +139,7 @@ final class Finder implements AutoCloseable {
     return wanted;
   }
 
-  private void heard(Announcement a, InetAddress from) {
+  private void heard(Announcement a, InetAddress from, boolean answer) {
     UUID peer;
     try {
       peer = UUID.fromString(a.containerId());
@@ -153,6 +156,9 @@ final class Finder implements AutoCloseable {
         return; // sent before it left, and delivered late
       }
       forgotten.remove(peer);
+    }
+    if (answer) {
+      answered.add(peer);
     }
     if (known.put(peer, new Heard(a, System.nanoTime())) == null) {
       membershipChanged();
@@ -212,6 +218,11 @@ final class Finder implements AutoCloseable {
   private synchronized void choose() {
     choosing.set(false);
     if (holding()) {
+      Set<UUID> early = early(self, answered, known.keySet(), linkedNow());
+      if (!early.isEmpty()) {
+        wanted = early;
+        early.forEach(this::consider);
+      }
       if (choosing.compareAndSet(false, true)) {
         later(this::choose, SETTLE_MS); // look again then
       }
@@ -225,15 +236,13 @@ final class Finder implements AutoCloseable {
   }
 
   /**
-   * Whether a newcomer waits before choosing beyond its first contact: while a large system is
-   * busy, it hears the others over seconds (answers, then announcements to the group), and each
-   * choice made on part of them dials
-   * containers (ring successors above all) that a later choice with more of them does not choose,
-   * links that stay. Routing tells, once the first link's states are applied, how many containers
-   * there are: it waits until then (until routing reaches at least half of those heard) and until
-   * it has heard nine in ten of those reached, or for {@link #HOLD_MAX_NANOS} after the first
-   * choice (containers beyond discovery's reach, on the far side of a bridging container, are
-   * never heard). Guarded by this.
+   * Whether a newcomer waits before choosing out of all it heard, beyond its first contact (and the
+   * {@link #early} choice): it hears the others over seconds, and each choice made on part of them
+   * dials containers (ring successors above all) that a later choice does not choose, links that
+   * stay. Routing tells, once the first link's states are applied, how many containers there are:
+   * it waits until then (until routing reaches half of those heard) and until it has heard nine in
+   * ten of those reached, or for {@link #HOLD_MAX_NANOS} after the first choice (containers beyond
+   * discovery's reach, behind a bridging container, are never heard). Guarded by this.
    */
   private boolean holding() {
     long now = System.nanoTime();
@@ -256,6 +265,22 @@ final class Finder implements AutoCloseable {
     // heard but not reachable are normal in a growing system: they have just started), or most
     // not heard yet.
     return reachable * 2L < heard || heard * 10L < reachable * 9L;
+  }
+
+  /**
+   * What a newcomer dials while it holds: the overlay's choice out of those that answered it (and
+   * are known). Each answered because by all it knows this newcomer chooses it ({@link #answers(
+   * UUID, UUID, Collection)}), so the overlay picks out of them what it would pick out of everyone,
+   * as far as they answered. Those heard only from the group wait for the hold.
+   */
+  static Set<UUID> early(UUID self, Set<UUID> answered, Set<UUID> known, Set<UUID> linked) {
+    List<UUID> members = new ArrayList<>(answered.size());
+    for (UUID a : answered) {
+      if (known.contains(a)) {
+        members.add(a);
+      }
+    }
+    return members.isEmpty() ? Set.of() : Set.copyOf(Overlay.chosen(self, members, linked));
   }
 
   private Set<UUID> linkedNow() {

@@ -39,7 +39,7 @@ class DiscoveryBuilderTest {
         .systemId("s")
         .group(InetAddress.getByName("239.255.1.1"), LoopbackMulticast.freePort())
         .container("id", "name")
-        .listener((a, from) -> { })
+        .listener((a, from, answer) -> { })
         .range(Discovery.Range.SUBNET)
         .interfaces(List.of("nosuch0"));
     IOException e = assertThrows(IOException.class, b::start);

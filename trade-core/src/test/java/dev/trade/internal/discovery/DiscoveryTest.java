@@ -103,8 +103,11 @@ class DiscoveryTest {
     rc.awaitHeard("b", 1);
     assertTrue((System.nanoTime() - t0) / 1_000_000 < 1000, "the answers came at once");
     // b's burst was over before c started: the first packet of b that c heard is b's answer.
-    long answer = rc.heard().stream().filter(x -> x.containerId().equals("b")).findFirst()
-        .orElseThrow().sequence();
+    List<Announcement> heardByC = rc.heard();
+    int first = heardByC.indexOf(heardByC.stream().filter(x -> x.containerId().equals("b"))
+        .findFirst().orElseThrow());
+    long answer = heardByC.get(first).sequence();
+    assertTrue(rc.answers().get(first), "c's listener is told that b's packet is an answer");
     // Then a marker from b to the group: a's socket receives in order, so an answer b had sent to
     // the group would have reached a before it.
     b.announceNow();
@@ -112,6 +115,12 @@ class DiscoveryTest {
         .anyMatch(x -> x.containerId().equals("b") && x.sequence() > answer));
     assertTrue(ra.heard().stream().noneMatch(x -> x.containerId().equals("b")
         && x.sequence() == answer), "a heard b's answer to c: " + ra.heard());
+    List<Announcement> heardByA = ra.heard();
+    for (int i = 0; i < heardByA.size(); i++) {
+      if (heardByA.get(i).containerId().equals("b") && heardByA.get(i).sequence() > answer) {
+        assertFalse(ra.answers().get(i), "b's marker went to the group");
+      }
+    }
   }
 
   @Test

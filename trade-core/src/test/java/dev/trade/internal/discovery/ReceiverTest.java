@@ -35,7 +35,7 @@ class ReceiverTest {
 
   @Test
   void ownRepeatedAndNewAnnouncements() throws IOException {
-    receiver = receiver((a, from) -> delivered.add(a));
+    receiver = receiver((a, from, answer) -> delivered.add(a));
     byte[] own = announcement("me", 1).encode(KEY);
     receiver.handle(own, own.length, FROM);
     byte[] first = announcement("other", 1).encode(KEY);
@@ -54,7 +54,7 @@ class ReceiverTest {
 
   @Test
   void aFailingListenerDoesNotStopDelivery() throws IOException {
-    receiver = receiver((a, from) -> {
+    receiver = receiver((a, from, answer) -> {
       delivered.add(a);
       throw new IllegalStateException("listener bug");
     });
@@ -67,7 +67,7 @@ class ReceiverTest {
 
   @Test
   void aPacketFromTheFarPastIsAClockSkewDrop() throws IOException {
-    receiver = receiver((a, from) -> delivered.add(a));
+    receiver = receiver((a, from, answer) -> delivered.add(a));
     byte[] old = new Announcement(1, SYSTEM, "other", "n", List.of(), 1,
         System.currentTimeMillis() - 3_600_000).encode(KEY);
     receiver.handle(old, old.length, FROM);

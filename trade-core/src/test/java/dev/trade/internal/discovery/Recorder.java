@@ -21,13 +21,15 @@ final class Recorder implements Discovery.Listener, Receiver.Observer {
 
   private final List<Announcement> heard = new ArrayList<>();
   private final List<InetAddress> from = new ArrayList<>();
+  private final List<Boolean> answers = new ArrayList<>();
   private final Map<Reason, Integer> drops = new EnumMap<>(Reason.class);
   private int ignored;
 
   @Override
-  public synchronized void heard(Announcement a, InetAddress source) {
+  public synchronized void heard(Announcement a, InetAddress source, boolean answer) {
     heard.add(a);
     from.add(source);
+    answers.add(answer);
     notifyAll();
   }
 
@@ -53,6 +55,11 @@ final class Recorder implements Discovery.Listener, Receiver.Observer {
 
   synchronized List<Announcement> heard() {
     return List.copyOf(heard);
+  }
+
+  /** Whether each announcement {@link #heard()} lists came as an answer, in the same order. */
+  synchronized List<Boolean> answers() {
+    return List.copyOf(answers);
   }
 
   synchronized List<InetAddress> sources() {

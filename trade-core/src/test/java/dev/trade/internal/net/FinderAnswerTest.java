@@ -35,18 +35,24 @@ class FinderAnswerTest {
     for (long seed = 1; seed <= 5; seed++) {
       List<UUID> system = members(100, seed);
       UUID newcomer = system.remove(0);
-      Set<UUID> answering = new HashSet<>();
-      for (UUID c : system) {
-        Set<UUID> knownToC = new HashSet<>(system);
-        knownToC.remove(c);
-        if (Finder.answers(c, newcomer, knownToC)) {
-          answering.add(c);
-        }
-      }
+      Set<UUID> answering = answering(newcomer, system);
       Set<UUID> all = new HashSet<>(system);
       all.add(newcomer);
       assertEquals(Overlay.chosen(newcomer, all, Set.of()), answering);
       assertTrue(answering.size() <= 8, answering.size() + " answers instead of 99");
     }
+  }
+
+  /** The containers of {@code system} that answer {@code newcomer}, each by its own full view. */
+  static Set<UUID> answering(UUID newcomer, List<UUID> system) {
+    Set<UUID> answering = new HashSet<>();
+    for (UUID c : system) {
+      Set<UUID> knownToC = new HashSet<>(system);
+      knownToC.remove(c);
+      if (Finder.answers(c, newcomer, knownToC)) {
+        answering.add(c);
+      }
+    }
+    return answering;
   }
 }
