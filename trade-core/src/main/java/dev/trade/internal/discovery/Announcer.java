@@ -97,6 +97,18 @@ final class Announcer {
     }
   }
 
+  /**
+   * Runs {@code task} on the announcing thread after the announcements due now (the first of the
+   * start burst); not at all once closing.
+   */
+  void runSoon(Runnable task) {
+    try {
+      scheduler.execute(task);
+    } catch (RejectedExecutionException e) {
+      // Closing: nobody waits for it.
+    }
+  }
+
   /** Turning it on sends a burst, as at start. */
   void setOn(boolean on) {
     synchronized (lock) {
