@@ -30,9 +30,10 @@ import java.util.function.Supplier;
  * Turns multicast discovery into links: announces this container's listen addresses, keeps the
  * set of live containers it hears, and dials the ones {@link Overlay} chooses out of that set
  * (all of them in a small system, O(log n) in a large one; the rest are reached by forwarding).
- * A container stays known until it has not announced itself for three intervals, or until
- * routing finds it unreachable ({@link #forget}). Links that exist are never closed here, whoever
- * made them.
+ * A newcomer first dials the overlay's choice out of those that answered it, then, once it has
+ * heard enough of the system, out of all (see {@link #holding}). A container stays known until it
+ * has not announced itself for three intervals, or until routing finds it unreachable
+ * ({@link #forget}). Links that exist are never closed here, whoever made them.
  *
  * <p>Of two containers that choose each other, the one with the smaller id dials at once and the
  * other only if no link appeared shortly after, so that normally one connection is made, not two;
@@ -354,6 +355,7 @@ final class Finder implements AutoCloseable {
         && !linked.test(e.getKey()));
     dialling.values().removeIf(t -> now - t > TimeUnit.MILLISECONDS.toNanos(DIAL_GRACE_MS));
     forgotten.values().removeIf(f -> now - f[1] > FORGET_NANOS);
+    answered.retainAll(known.keySet());
     if (changed) {
       membershipChanged();
     } else {
