@@ -122,8 +122,8 @@ public final class Discovery implements AutoCloseable {
     }
     announcer.start(b.interval);
     // Logged on the announcing thread, after the first announcement: the first log record of a JVM
-    // sets up its logging and date formatting, and on the building thread that took a container's
-    // build() and registration from a median 250 to 187 ms (40 interleaved fresh JVMs). The TTL
+    // sets up its logging and date formatting, which on the building thread added about 60 ms to a
+    // fresh JVM's build() (medians of 40 interleaved pairs with the line and without it). The TTL
     // goes in as text: a number makes the logger set up the locale's number format first.
     Object[] facts = {b.containerName, b.systemId, Announcement.format(target), interfaceNames(),
         b.range, Integer.toString(b.range.ttl), b.broadcast, b.discovery};
