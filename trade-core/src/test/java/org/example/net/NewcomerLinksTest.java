@@ -45,8 +45,9 @@ class NewcomerLinksTest {
           "all services on " + c.getName());
     }
     // Quiet: every container has heard every other one, at the latest at the others' announcement
-    // one interval (3 s) after they started. A container answers by what it has heard.
-    sleepUntil(built + TimeUnit.MILLISECONDS.toNanos(3_500));
+    // one interval (3 s) after they started, with 2 s for a busy machine. A container answers by
+    // what it has heard.
+    sleepUntil(built + TimeUnit.MILLISECONDS.toNanos(5_000));
     TRADEContainer newcomer = swarm.join("newcomer");
     long joined = System.nanoTime();
     containers.add(newcomer);
