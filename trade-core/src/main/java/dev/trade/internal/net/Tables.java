@@ -121,7 +121,6 @@ final class Tables {
     }
   }
 
-
   /** Forgets tables that waited longer than the grace period. */
   void prune(long nowNanos) {
     waiting.values().removeIf(w -> nowNanos - w.since() > graceNanos);

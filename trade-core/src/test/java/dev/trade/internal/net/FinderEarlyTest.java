@@ -17,22 +17,34 @@ import org.junit.jupiter.api.Test;
  * large system starts, can be seconds behind. No early link may be one it would not make later.
  */
 class FinderEarlyTest {
+  /** A newcomer joining a system of random ids, answered by those its overlay chooses. */
+  private record Joining(String label, UUID newcomer, Set<UUID> answered, Set<UUID> all) {}
+
+  /** Newcomers to systems of 12, 30, 100 and 300, {@code seeds} systems of each size. */
+  private static List<Joining> joinings(int seeds) {
+    List<Joining> result = new ArrayList<>();
+    for (int n : new int[] {12, 30, 100, 300}) {
+      for (long seed = 1; seed <= seeds; seed++) {
+        List<UUID> system = new ArrayList<>(OverlayTest.ids(n, seed));
+        UUID newcomer = system.remove(0);
+        Set<UUID> all = new HashSet<>(system);
+        all.add(newcomer);
+        result.add(new Joining(n + "/" + seed, newcomer,
+            FinderAnswerTest.answering(newcomer, system), all));
+      }
+    }
+    return result;
+  }
+
   @Test
   void theEarlyChoiceIsTheOverlaysChoiceAsFarAsItAnswered() {
     int equal = 0;
-    for (int n : new int[] {12, 30, 100, 300}) {
-      for (long seed = 1; seed <= 25; seed++) {
-        List<UUID> system = new ArrayList<>(OverlayTest.ids(n, seed));
-        UUID newcomer = system.remove(0);
-        Set<UUID> answered = FinderAnswerTest.answering(newcomer, system);
-        Set<UUID> all = new HashSet<>(system);
-        all.add(newcomer);
-        Set<UUID> later = Overlay.chosen(newcomer, all, Set.of());
-        Set<UUID> early = Finder.early(newcomer, answered, answered, Set.of());
-        assertTrue(later.containsAll(early), n + "/" + seed + ": " + early + " not in " + later);
-        assertTrue(early.containsAll(successors(newcomer, all)), n + "/" + seed);
-        equal += early.equals(later) ? 1 : 0;
-      }
+    for (Joining j : joinings(25)) {
+      Set<UUID> later = Overlay.chosen(j.newcomer(), j.all(), Set.of());
+      Set<UUID> early = Finder.early(j.newcomer(), j.answered(), j.answered(), Set.of());
+      assertTrue(later.containsAll(early), j.label() + ": " + early + " not in " + later);
+      assertTrue(early.containsAll(successors(j.newcomer(), j.all())), j.label());
+      equal += early.equals(later) ? 1 : 0;
     }
     assertTrue(equal > 50, equal + " of 100 early choices are the whole choice");
   }
@@ -47,21 +59,15 @@ class FinderEarlyTest {
   void withTheFirstAnswerLinkedAlreadyAtMostOneEarlyLinkIsOneTooMany() {
     int newcomers = 0;
     int oneTooMany = 0;
-    for (int n : new int[] {12, 30, 100, 300}) {
-      for (long seed = 1; seed <= 50; seed++) {
-        List<UUID> system = new ArrayList<>(OverlayTest.ids(n, seed));
-        UUID newcomer = system.remove(0);
-        Set<UUID> answered = FinderAnswerTest.answering(newcomer, system);
-        Set<UUID> all = new HashSet<>(system);
-        all.add(newcomer);
-        for (UUID first : answered) {
-          Set<UUID> linked = Set.of(first);
-          Set<UUID> extra = new HashSet<>(Finder.early(newcomer, answered, answered, linked));
-          extra.removeAll(Overlay.chosen(newcomer, all, linked));
-          assertTrue(extra.size() <= 1, n + "/" + seed + ": " + extra);
-          newcomers++;
-          oneTooMany += extra.size();
-        }
+    for (Joining j : joinings(50)) {
+      for (UUID first : j.answered()) {
+        Set<UUID> linked = Set.of(first);
+        Set<UUID> extra =
+            new HashSet<>(Finder.early(j.newcomer(), j.answered(), j.answered(), linked));
+        extra.removeAll(Overlay.chosen(j.newcomer(), j.all(), linked));
+        assertTrue(extra.size() <= 1, j.label() + ": " + extra);
+        newcomers++;
+        oneTooMany += extra.size();
       }
     }
     assertTrue(oneTooMany * 20 < newcomers, oneTooMany + " of " + newcomers);
