@@ -15,8 +15,8 @@ from multihost_node import FAILURE_TIMEOUT_MS, HEARTBEAT_MS, STARTUP_S, Node
 # once; a silent one is declared gone after FAILURETIMEOUT, checked every HEARTBEATINTERVAL (the
 # settings every node runs with, FAILURE_TIMEOUT_MS and HEARTBEAT_MS: see multihost_node).
 KILL_DETECTION_MS = 1000
-# A silent peer is declared gone at the first heartbeat tick after FAILURETIMEOUT without a frame
-# from it. An idle link carries a ping every HEARTBEATINTERVAL (one is sent when the link has been
+# A silent peer is declared gone FAILURETIMEOUT after its last frame (checked at every heartbeat
+# tick, and exactly when the timeout falls between two ticks). An idle link carries a ping every HEARTBEATINTERVAL (one is sent when the link has been
 # idle for half an interval, checked every interval), so its last frame came up to one interval
 # before it fell silent: by design it leaves 2000-3000 ms after it fell silent. The
 # bounds allow one interval more below, and more above for a loaded machine, where timers run

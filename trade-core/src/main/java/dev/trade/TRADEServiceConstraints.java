@@ -28,19 +28,21 @@ import java.util.Set;
  *       {@link #host(String)}: provided by a container on that host.
  * </ul>
  *
- * <p><b>Or and not.</b> Constraints form a disjunctive normal form with negation: the conjunction
- * above, minus every constraints object given to {@link #not(TRADEServiceConstraints)}, or any
- * alternative given to {@link #or(TRADEServiceConstraints)}:
+ * <p><b>Or and not.</b> Constraints form a disjunctive normal form with negation: an object matches
+ * when the conjunction above matches and none of the constraints given to
+ * {@link #not(TRADEServiceConstraints)} does, or when any alternative given to
+ * {@link #or(TRADEServiceConstraints)} matches. A negation belongs to the conjunction of the object
+ * it is added to, not to that object's alternatives:
  *
  * <pre>{@code
- * // openGripper or closeGripper, but not in group "Sim"
+ * // openGripper outside group "Sim", or closeGripper in any group
  * new TRADEServiceConstraints().name("openGripper")
- *     .or(new TRADEServiceConstraints().name("closeGripper"))
- *     .not(new TRADEServiceConstraints().inGroups("Sim"));
+ *     .not(new TRADEServiceConstraints().inGroups("Sim"))
+ *     .or(new TRADEServiceConstraints().name("closeGripper"));
  * }</pre>
  *
- * Negations apply to the whole expression, alternatives are copied when added (so later changes
- * to the argument do not affect this object).
+ * Alternatives and negations are copied when added (so later changes to the argument do not
+ * affect this object).
  *
  * <p>Not thread-safe: build it in one thread, then share it freely for lookups (lookups only read).
  */
@@ -121,7 +123,10 @@ public final class TRADEServiceConstraints {
     return this;
   }
 
-  /** Exclude services that match {@code excluded} (a copy of it is taken now). */
+  /**
+   * Exclude services that match {@code excluded} from this object's own conjunction (not from its
+   * alternatives); a copy of it is taken now.
+   */
   public TRADEServiceConstraints not(TRADEServiceConstraints excluded) {
     negations.add(Objects.requireNonNull(excluded, "excluded == null").copy());
     return this;

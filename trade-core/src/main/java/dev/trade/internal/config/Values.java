@@ -30,9 +30,10 @@ final class Values {
   private static final class Patterns {
     static final String IDENT = "\\p{javaJavaIdentifierStart}\\p{javaJavaIdentifierPart}*";
     static final String QUALIFIED = IDENT + "(\\." + IDENT + ")*";
-    // ObjectInputFilter class patterns: [module/]name, name.*, name.**, or name*.
+    // ObjectInputFilter class patterns: name, name.*, name.**, or name*. Not module/...: the
+    // allow-list judges class names alone (the codec's AllowList refuses the form too).
     static final Pattern CLASS_PATTERN =
-        Pattern.compile("(" + QUALIFIED + "/)?" + QUALIFIED + "(\\.\\*\\*?|\\*)?");
+        Pattern.compile(QUALIFIED + "(\\.\\*\\*?|\\*)?");
     static final Pattern INTERFACE_NAME = Pattern.compile("[^\\p{Cntrl}\\s,;/]+");
   }
 
@@ -154,7 +155,8 @@ final class Values {
   /**
    * {@code ;}-separated class patterns. Only patterns that allow classes are accepted: a
    * rejection ({@code !...}), a limit ({@code maxdepth=...}) or a catch-all ({@code *}) would
-   * change the built-in filter instead of extending it.
+   * change the built-in filter instead of extending it. The same forms as the codec's allow-list
+   * takes, so that settings that load also build a container.
    */
   static Object allowList(String s) {
     List<String> patterns = new ArrayList<>();
@@ -162,6 +164,10 @@ final class Values {
       String pattern = p.trim();
       if (pattern.isEmpty()) {
         continue; // a trailing ';' is harmless
+      }
+      if (pattern.indexOf('/') >= 0) {
+        throw new IllegalArgumentException("'" + pattern + "': a module prefix (module/) is not"
+            + " supported: name the classes or packages alone, e.g. java.time.**");
       }
       if (!Patterns.CLASS_PATTERN.matcher(pattern).matches()) {
         throw new IllegalArgumentException("'" + pattern + "': expected ';'-separated class"

@@ -48,6 +48,9 @@ class SettingsErrorsTest {
           + " patterns such as com.example.Dto;com.example.model.*;com.example.**",
       "SERIALIZATIONALLOWLIST | * | SERIALIZATIONALLOWLIST=*: '*': expected ';'-separated class"
           + " patterns such as com.example.Dto;com.example.model.*;com.example.**",
+      "SERIALIZATIONALLOWLIST | com.example.*;java.base/java.time.** | SERIALIZATIONALLOWLIST="
+          + "com.example.*;java.base/java.time.**: 'java.base/java.time.**': a module prefix"
+          + " (module/) is not supported: name the classes or packages alone, e.g. java.time.**",
       "SERIALIZATIONALLOWLIST | maxdepth=5 | SERIALIZATIONALLOWLIST=maxdepth=5: 'maxdepth=5':"
           + " expected ';'-separated class patterns such as"
           + " com.example.Dto;com.example.model.*;com.example.**",

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import dev.trade.internal.codec.AllowList;
 import java.net.InetAddress;
 import java.time.Duration;
 import java.util.List;
@@ -17,6 +18,19 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
 class SettingsTest {
+
+  /** Settings that load must build a container: its allow-list takes every pattern they accept. */
+  @Test
+  void everyAcceptedClassPatternIsOneTheAllowListTakes() {
+    Settings s = Settings.defaults().with("SERIALIZATIONALLOWLIST",
+        "com.example.Dto;com.example.model.*;com.example.**;com.example.Dto*;Top;a_b.$c.D$1");
+    assertEquals(6, s.serializationAllowList().size());
+    AllowList list = AllowList.withDefaults();
+    for (String pattern : s.serializationAllowList()) {
+      list.add(pattern);
+    }
+    assertTrue(list.isAllowed("com.example.sub.Dto2"));
+  }
 
   @Test
   void defaultsTurnNetworkingOffAndKeepTradeValues() throws Exception {
@@ -92,7 +106,7 @@ class SettingsTest {
         .with("DISCOVERYRANGE", "Subnet")
         .with("DISCOVERYINTERFACES", "eth0, wlan0 eth0")
         .with("SERIALIZATIONALLOWLIST",
-            "com.example.Dto; com.example.model.*;java.base/java.time.**;")
+            "com.example.Dto; com.example.model.*;java.time.**;")
         .with("MAXFRAMESIZE", "1024");
     assertEquals("arm-1", s.containerName());
     assertTrue(s.startDiscovery());
@@ -120,7 +134,7 @@ class SettingsTest {
     assertEquals(DiscoveryRange.SUBNET, s.discoveryRange());
     assertEquals(1, s.discoveryRange().ttl());
     assertEquals(List.of("eth0", "wlan0"), s.discoveryInterfaces());
-    assertEquals(List.of("com.example.Dto", "com.example.model.*", "java.base/java.time.**"),
+    assertEquals(List.of("com.example.Dto", "com.example.model.*", "java.time.**"),
         s.serializationAllowList());
     assertEquals(1024, s.maxFrameSize());
 
