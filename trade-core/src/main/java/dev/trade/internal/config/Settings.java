@@ -266,6 +266,14 @@ public final class Settings {
     return (List<String>) values.get(Key.DISCOVERYINTERFACES);
   }
 
+  /**
+   * DISCOVERYCLOCKSKEW: how far the clock in another host's announcement may be from this host's,
+   * either way; zero turns the check off (replays are then refused by sequence numbers alone).
+   */
+  public Duration discoveryClockSkew() {
+    return duration(Key.DISCOVERYCLOCKSKEW);
+  }
+
   /** SERIALIZATIONALLOWLIST: class patterns added to the built-in allow-list. Unmodifiable. */
   @SuppressWarnings("unchecked") // Key.SERIALIZATIONALLOWLIST always parses to a List<String>
   public List<String> serializationAllowList() {

@@ -98,7 +98,7 @@ final class Drops {
         return "Ignoring datagrams from " + from.getHostAddress() + " on the discovery port: "
             + "not TRADE announcements (" + e.getMessage() + "); does another program use it?";
       case CLOCK_SKEW:
-        return who + e.getMessage() + "; synchronise the clocks (NTP) or raise the tolerance";
+        return who + e.getMessage() + "; synchronise the clocks (NTP), or set DISCOVERYCLOCKSKEW";
       default:
         return who + e.reason().name().toLowerCase(Locale.ROOT) + ": " + e.getMessage();
     }

@@ -89,6 +89,7 @@ final class Finder implements AutoCloseable {
         .range(settings.discoveryRange() == DiscoveryRange.SUBNET
             ? Discovery.Range.SUBNET : Discovery.Range.LOCALHOST)
         .interfaces(settings.discoveryInterfaces())
+        .maxClockSkew(settings.discoveryClockSkew())
         .container(self.toString(), name)
         .addresses(addresses)
         .listener(this::heard)

@@ -25,6 +25,8 @@ class SettingsErrorsTest {
           + " 1..2147483647",
       "DISCOVERYTIMEOUT | -1 | DISCOVERYTIMEOUT=-1: expected a duration in milliseconds"
           + " 0..2147483647",
+      "DISCOVERYCLOCKSKEW | 30s | DISCOVERYCLOCKSKEW=30s: expected a duration in milliseconds"
+          + " 0..2147483647",
       "TIMEOUT_CLIENT_SOCKET | 0 | TIMEOUT_CLIENT_SOCKET=0: expected a duration in milliseconds"
           + " 1..2147483647",
       "MAXFRAMESIZE | 1023 | MAXFRAMESIZE=1023: expected a size in bytes 1024..2147483639",

@@ -59,6 +59,7 @@ class SettingsTest {
     assertEquals(DiscoveryRange.LOCALHOST, d.discoveryRange());
     assertEquals(0, d.discoveryRange().ttl());
     assertEquals(List.of(), d.discoveryInterfaces());
+    assertEquals(Duration.ofSeconds(30), d.discoveryClockSkew());
     assertEquals(List.of(), d.serializationAllowList());
     assertEquals(64 * 1024 * 1024, d.maxFrameSize());
   }
@@ -71,8 +72,8 @@ class SettingsTest {
         "STARTACCEPTINGCONNECTIONS", "SERVERIPS", "CONNECTCONTAINERS", "SCANFORSERVER",
         "TIMEOUT_CLIENT_SOCKET", "CALLCHECKTIME", "USEENCRYPTION", "CREDENTIALS", "TRADESYSID",
         "COPYDATAFORLOCALINVOKES", "CALLTIMEOUT", "HEARTBEATINTERVAL", "FAILURETIMEOUT",
-        "DISCOVERYRANGE", "DISCOVERYINTERFACES", "SERIALIZATIONALLOWLIST", "MAXFRAMESIZE"),
-        List.copyOf(map.keySet()));
+        "DISCOVERYRANGE", "DISCOVERYINTERFACES", "DISCOVERYCLOCKSKEW", "SERIALIZATIONALLOWLIST",
+        "MAXFRAMESIZE"), List.copyOf(map.keySet()));
     assertEquals("33333", map.get("BROADCASTPORT"));
     assertEquals("", map.get("SERVERIPS"));
     assertEquals("localhost", map.get("DISCOVERYRANGE"));
@@ -105,6 +106,7 @@ class SettingsTest {
         .with("FAILURETIMEOUT", "1000")
         .with("DISCOVERYRANGE", "Subnet")
         .with("DISCOVERYINTERFACES", "eth0, wlan0 eth0")
+        .with("DISCOVERYCLOCKSKEW", "0")
         .with("SERIALIZATIONALLOWLIST",
             "com.example.Dto; com.example.model.*;java.time.**;")
         .with("MAXFRAMESIZE", "1024");
@@ -134,6 +136,7 @@ class SettingsTest {
     assertEquals(DiscoveryRange.SUBNET, s.discoveryRange());
     assertEquals(1, s.discoveryRange().ttl());
     assertEquals(List.of("eth0", "wlan0"), s.discoveryInterfaces());
+    assertEquals(Duration.ZERO, s.discoveryClockSkew());
     assertEquals(List.of("com.example.Dto", "com.example.model.*", "java.time.**"),
         s.serializationAllowList());
     assertEquals(1024, s.maxFrameSize());
