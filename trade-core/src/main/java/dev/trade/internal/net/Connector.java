@@ -275,7 +275,7 @@ final class Connector {
     }
     Handshake.Peer peer;
     try {
-      peer = handshake.run(socket.getInputStream(), socket.getOutputStream());
+      peer = handshake.run(socket.getInputStream(), socket.getOutputStream(), initiatedHere);
     } catch (Handshake.Failure e) {
       LOG.log(Level.WARNING, "handshake with {0} failed: {1}", socket.getRemoteSocketAddress(),
           e.getMessage());

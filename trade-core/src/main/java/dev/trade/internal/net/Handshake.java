@@ -20,9 +20,16 @@ import javax.crypto.spec.SecretKeySpec;
 
 /**
  * The connection handshake: both sides send HELLO (identity and a fresh nonce), then AUTH, an HMAC
- * over both nonces and identities keyed by the shared credentials, proving each holds them without
- * the secret crossing the wire. Until the peer's AUTH checks out nothing but these two small
- * fixed-layout frames is read; no value decoder ever sees unauthenticated bytes.
+ * over both nonces and identities and the sender's role (whether it opened the connection or
+ * accepted it), keyed by the shared credentials, proving each holds them without the secret
+ * crossing the wire. Until the peer's AUTH checks out nothing but these two small fixed-layout
+ * frames is read; no value decoder ever sees unauthenticated bytes.
+ *
+ * <p>The role is what stops a relay: without it, a party without credentials that opens one
+ * connection to each of two containers, posing to each as the other with the other's nonce, could
+ * pass each container's AUTH on to the other, and hold two links that both take as authentic.
+ * Opened by that party, both connections have two accepting containers, and an accepting side's
+ * proof never passes for an opening side's.
  *
  * <p>Stateless apart from the identity given at construction; thread-safe.
  */
@@ -52,6 +59,10 @@ final class Handshake {
       this(containerId, name, host, addresses, cipher, false);
     }
   }
+
+  /** AUTH role of a side that opened the connection, and of one that accepted it. */
+  static final byte OPENED = 'I';
+  static final byte ACCEPTED = 'A';
 
   /** HELLO flag: this side encrypts frames after the handshake (USEENCRYPTION). */
   private static final int FLAG_ENCRYPT = 1;
@@ -94,10 +105,12 @@ final class Handshake {
   /**
    * Runs the handshake over a connected stream pair; the caller sets a read timeout first.
    *
+   * @param opened whether this side opened the connection (else it accepted it)
+   *
    * @throws Failure with the reason (also sent to the peer as REFUSE when it is ours to tell)
    * @throws IOException when the connection fails or the peer refused us
    */
-  Peer run(InputStream rawIn, OutputStream rawOut) throws IOException, Failure {
+  Peer run(InputStream rawIn, OutputStream rawOut, boolean opened) throws IOException, Failure {
     DataInputStream in = new DataInputStream(rawIn);
     DataOutputStream out = new DataOutputStream(rawOut);
     byte[] nonce = new byte[NONCE];
@@ -150,11 +163,13 @@ final class Handshake {
       throw refuse(out, Wire.REFUSE_ENCRYPTION, "USEENCRYPTION differs: " + self.encrypt()
           + " here, " + peerEncrypts + " at " + peer.name());
     }
-    writeFrame(out, Wire.AUTH, mac(nonce, peerNonce, self.containerId(), peer.containerId()));
+    byte role = opened ? OPENED : ACCEPTED;
+    byte peerRole = opened ? ACCEPTED : OPENED;
+    writeFrame(out, Wire.AUTH, mac(role, nonce, peerNonce, self.containerId(), peer.containerId()));
     ByteBuffer auth = readFrame(in, Wire.AUTH);
     byte[] proof = new byte[auth.remaining()];
     auth.get(proof);
-    byte[] expected = mac(peerNonce, nonce, peer.containerId(), self.containerId());
+    byte[] expected = mac(peerRole, peerNonce, nonce, peer.containerId(), self.containerId());
     if (!MessageDigest.isEqual(proof, expected)) {
       throw refuse(out, Wire.REFUSE_CREDENTIALS, "authentication failed: wrong CREDENTIALS on one side");
     }
@@ -186,13 +201,17 @@ final class Handshake {
     return bytes.toByteArray();
   }
 
-  /** The AUTH payload that {@code sender} sends to {@code receiver}. */
-  byte[] mac(byte[] senderNonce, byte[] receiverNonce, UUID sender, UUID receiver) {
+  /**
+   * The AUTH payload that {@code sender}, in {@code senderRole} ({@link #OPENED} or
+   * {@link #ACCEPTED}), sends to {@code receiver}.
+   */
+  byte[] mac(byte senderRole, byte[] senderNonce, byte[] receiverNonce, UUID sender, UUID receiver) {
     try {
       Mac mac = Mac.getInstance("HmacSHA256");
       mac.init(new SecretKeySpec(key, "HmacSHA256"));
-      mac.update("TRADE-auth-v1".getBytes(StandardCharsets.US_ASCII));
+      mac.update("TRADE-auth-v2".getBytes(StandardCharsets.US_ASCII));
       mac.update(self.systemId().getBytes(StandardCharsets.UTF_8));
+      mac.update(senderRole);
       mac.update(uuid(sender));
       mac.update(uuid(receiver));
       mac.update(senderNonce);

@@ -131,7 +131,7 @@ class FrameExamplesTest {
   @Test
   void authExample() throws Exception {
     assertDocumented("auth-key", Handshake.deriveKey("diarc", "diarcUser"));
-    byte[] proof = armHandshake().mac(ARM_NONCE, HUB_NONCE, ARM, HUB);
+    byte[] proof = armHandshake().mac(Handshake.OPENED, ARM_NONCE, HUB_NONCE, ARM, HUB);
     assertDocumented("auth", handshakeFrame(Wire.AUTH, proof));
   }
 
@@ -142,14 +142,16 @@ class FrameExamplesTest {
     byte[] key = sha.digest("TRADE-credentials-v1\0diarc\0diarcUser".getBytes(StandardCharsets.UTF_8));
     Mac mac = Mac.getInstance("HmacSHA256");
     mac.init(new SecretKeySpec(key, "HmacSHA256"));
-    mac.update("TRADE-auth-v1".getBytes(StandardCharsets.US_ASCII));
+    mac.update("TRADE-auth-v2".getBytes(StandardCharsets.US_ASCII));
     mac.update("diarc".getBytes(StandardCharsets.UTF_8));
+    mac.update((byte) 'I'); // the arm opened the connection
     mac.update(ByteBuffer.allocate(32).putLong(ARM.getMostSignificantBits())
         .putLong(ARM.getLeastSignificantBits()).putLong(HUB.getMostSignificantBits())
         .putLong(HUB.getLeastSignificantBits()).array());
     mac.update(ARM_NONCE);
     mac.update(HUB_NONCE);
-    assertArrayEquals(mac.doFinal(), armHandshake().mac(ARM_NONCE, HUB_NONCE, ARM, HUB));
+    assertArrayEquals(mac.doFinal(),
+        armHandshake().mac(Handshake.OPENED, ARM_NONCE, HUB_NONCE, ARM, HUB));
   }
 
   @Test

@@ -43,7 +43,7 @@ final class RawPeer implements AutoCloseable {
     socket.setSoTimeout(5_000);
     Handshake h = new Handshake(
         new Handshake.Identity(systemId, id, name, "localhost", List.of()), credentials);
-    Handshake.Peer peer = h.run(in, out);
+    Handshake.Peer peer = h.run(in, out, true);
     socket.setSoTimeout(0);
     return peer;
   }
@@ -56,7 +56,7 @@ final class RawPeer implements AutoCloseable {
     socket.setSoTimeout(5_000);
     Handshake h = new Handshake(
         new Handshake.Identity("diarc", id, name, "localhost", List.of(), false, true), "diarcUser");
-    Handshake.Peer peer = h.run(in, out);
+    Handshake.Peer peer = h.run(in, out, true);
     socket.setSoTimeout(0);
     return peer;
   }
