@@ -15,6 +15,10 @@ import java.util.concurrent.TimeUnit;
  * nothing for half that long sends a PING (so an idle link carries one per interval), and a link
  * that received nothing for {@code FAILURETIMEOUT} is closed. A closed or reset socket is noticed
  * at once by the link's reader; this catches the silent cases (a frozen process, a pulled cable).
+ * A link whose write has waited for {@code FAILURETIMEOUT} is closed too: its peer does not read
+ * (stuck, or hostile while it goes on pinging), and every thread that sends over the link, callers
+ * and the control thread among them, would otherwise wait for it for good; closing the socket ends
+ * the write with an exception.
  *
  * <p>Silence is judged only while this container itself runs on time: a beat that comes more than
  * half an interval late means this process was stalled (a long GC pause, a suspended VM, an
@@ -74,6 +78,12 @@ final class Heartbeat {
     lastBeat = now;
     List<Link> idle = null;
     for (Link l : links) {
+      long writing = l.writingSince();
+      if (writing != 0 && now - Math.max(writing, resumed) >= silence) {
+        l.close("not reading: a write has waited " + TimeUnit.NANOSECONDS.toMillis(now - writing)
+            + " ms (FAILURETIMEOUT=" + TimeUnit.NANOSECONDS.toMillis(silence) + ")");
+        continue;
+      }
       long quiet = now - Math.max(l.lastReceived, resumed);
       if (quiet >= silence) {
         closeSilent(l, now - l.lastReceived);

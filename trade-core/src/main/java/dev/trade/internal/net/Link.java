@@ -161,6 +161,11 @@ final class Link {
     });
   }
 
+  /** When the write in progress began ({@link System#nanoTime}), or 0 if nobody writes now. */
+  long writingSince() {
+    return output.writingSince();
+  }
+
   /** Writes what is queued (see {@link LinkOutput#write}); see {@link #writeFailed}. */
   private void writeQueued() throws IOException {
     try {

@@ -29,6 +29,12 @@ final class LinkOutput {
   private volatile boolean burst;
   /** Whether a frame was sent, and perhaps left for the end of a burst, since the last look. */
   private volatile boolean deferred;
+  /**
+   * When the write in progress began (nanoTime, never 0), or 0 when nobody writes. A peer that
+   * stops reading stalls a write for good once its socket buffers are full: the heartbeat closes
+   * such a link ({@link #writingSince}), which ends the write with an exception.
+   */
+  private volatile long writingSince;
 
   /**
    * @param cipher seals each frame as it is written; null when the link is not encrypted
@@ -85,6 +91,7 @@ final class LinkOutput {
    */
   void write() throws IOException {
     while (!queue.isEmpty() && writing.compareAndSet(false, true)) {
+      writingSince = System.nanoTime() | 1;
       try {
         byte[] next;
         while ((next = queue.poll()) != null) {
@@ -97,10 +104,16 @@ final class LinkOutput {
         queue.clear();
         throw e;
       } finally {
+        writingSince = 0;
         writing.set(false);
       }
       // A frame queued after our last poll by a sender that found us writing is ours: look again.
     }
+  }
+
+  /** When the write in progress began ({@link System#nanoTime}), or 0 if nobody writes now. */
+  long writingSince() {
+    return writingSince;
   }
 
   /** Whether nothing is queued and nobody writes. */

@@ -1,0 +1,68 @@
+package dev.trade.internal.net;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import dev.trade.TRADEContainer;
+import dev.trade.TRADEService;
+import dev.trade.TRADEServiceConstraints;
+import java.io.ByteArrayOutputStream;
+import java.net.InetSocketAddress;
+import java.time.Duration;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
+import java.util.logging.Level;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+
+/**
+ * A peer that goes on pinging but stops reading: once its socket buffers are full, a write to it
+ * waits for good, and with it whoever writes. Here that is the container's control thread, which
+ * answers the peer's requests for its table: stalled, it would apply no link state or table of
+ * any other container again, and the peer's pings keep the link from looking silent. The heartbeat
+ * closes a link whose write has waited for FAILURETIMEOUT, which ends the write. On loopback.
+ */
+class NotReadingPeerTest {
+  private static final byte[] PING = Frames.finish(Frames.start(Wire.PING, 0));
+
+  public static class Probe {
+    @TRADEService
+    public int probe() {
+      return 7;
+    }
+  }
+
+  @Test
+  @Timeout(60)
+  void aLinkWhosePeerStopsReadingIsClosedOnceAWriteHasWaitedForFailureTimeout() throws Exception {
+    ScheduledExecutorService pinger = Executors.newSingleThreadScheduledExecutor();
+    try (LogCapture log = new LogCapture();
+        TRADEContainer provider = TRADEContainer.builder().name("provider")
+            .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
+            .property("HEARTBEATINTERVAL", "100").property("FAILURETIMEOUT", "600").build()) {
+      provider.registerAllServices(new Probe());
+      String[] at = provider.getServerAddresses().get(0).split("@");
+      try (RawPeer sink = RawPeer.connect(new InetSocketAddress(at[0], Integer.parseInt(at[1])))) {
+        sink.handshake("sink");
+        // Alive by its heartbeats all along: only a stalled write can end the link.
+        pinger.scheduleAtFixedRate(() -> sink.send(PING), 0, 50, TimeUnit.MILLISECONDS);
+        // Requests for the provider's table, whose answers come to far more than loopback's
+        // socket buffers (a few MB each way) hold, and are never read.
+        byte[] request = StateFrames.tableRequest(provider.getId());
+        ByteArrayOutputStream requests = new ByteArrayOutputStream();
+        for (int i = 0; i < 200_000; i++) {
+          requests.write(request);
+        }
+        sink.send(requests.toByteArray());
+        Deadline.await(Duration.ofSeconds(30), () -> log.has(Level.INFO,
+            "provider: link to sink closed: not reading: a write has waited", "(FAILURETIMEOUT=600)"),
+            "the link closed for its stalled write, in:\n" + log.tail());
+      }
+      // The control thread is free again: the container still works.
+      assertEquals(7, provider.getAvailableService(new TRADEServiceConstraints().name("probe"))
+          .call(Integer.class));
+    } finally {
+      pinger.shutdownNow();
+    }
+  }
+}
