@@ -101,6 +101,11 @@ final class JavaSerialization {
         overLimit = "maxElements " + limits.maxElements() + " references";
       } else if (info.arrayLength() > limits.maxElements()) {
         overLimit = "maxElements " + limits.maxElements() + " array elements";
+      } else if (info.arrayLength() > Math.max(0, length - info.streamBytes())) {
+        // Every element takes at least a byte of the stream; the JDK allocates the array as soon
+        // as this check passes, so a few bytes claiming a huge array must not pass it.
+        overLimit = "its length: an array of " + info.arrayLength() + " elements in "
+            + Math.max(0, length - info.streamBytes()) + " bytes left";
       } else if (info.streamBytes() > length) {
         overLimit = "its length";
       }

@@ -176,6 +176,27 @@ class HostileInputTest {
   }
 
   @Test
+  void aJavaSerializedArrayLongerThanItsBytesIsRejectedBeforeItIsAllocated() throws Exception {
+    Codec roomy = TestTypes.codec(new Limits(1 << 20, 64, Integer.MAX_VALUE - 8, 100));
+    byte[] bytes = codec.encode(new ArrayDeque<Object>(List.of(new long[] {1, 2, 3, 4})));
+    // The long[]'s length follows its class descriptor: "[J", serialVersionUID, flags, no
+    // fields, end of block data, no superclass.
+    int at = indexOf(bytes, new byte[] {'[', 'J'}) + 2 + 8 + 1 + 2 + 1 + 1;
+    assertEquals(4, ByteBuffer.wrap(bytes).getInt(at));
+    ByteBuffer.wrap(bytes).putInt(at, Integer.MAX_VALUE - 16); // 16 GB of longs, in 32 bytes
+    assertMalformed(roomy, bytes);
+  }
+
+  private static int indexOf(byte[] in, byte[] part) {
+    for (int i = 0; i + part.length <= in.length; i++) {
+      if (Arrays.equals(in, i, i + part.length, part, 0, part.length)) {
+        return i;
+      }
+    }
+    throw new AssertionError("not found");
+  }
+
+  @Test
   void depthBombsAreRejected() throws Exception {
     int levels = 1_000_000;
     byte[] lists = new byte[levels * 2 + 1];
