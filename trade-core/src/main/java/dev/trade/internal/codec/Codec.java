@@ -34,17 +34,30 @@ public final class Codec {
   private final AllowList allowList;
   private final Limits limits;
   private final InfoBinding info;
+  private final boolean javaSerialization;
   private final TypeCache types = new TypeCache();
 
   /**
+   * A codec for values of every kind, Java-serialized ones included.
+   *
    * @param allowList the classes decoding may load
    * @param limits the bounds on one encoded value
    * @param info how service infos are described and bound; {@link InfoBinding#NONE} if none travel
    */
   public Codec(AllowList allowList, Limits limits, InfoBinding info) {
+    this(allowList, limits, info, true);
+  }
+
+  /**
+   * @param javaSerialization whether a JAVA value is decoded; false for what never holds one
+   *     (service tables hold descriptors only), so that no Java stream, whose cost the filter
+   *     cannot bound (nested hash sets: exponential hashing), is ever read there
+   */
+  public Codec(AllowList allowList, Limits limits, InfoBinding info, boolean javaSerialization) {
     this.allowList = Objects.requireNonNull(allowList, "allowList == null");
     this.limits = Objects.requireNonNull(limits, "limits == null");
     this.info = Objects.requireNonNull(info, "info == null");
+    this.javaSerialization = javaSerialization;
   }
 
   public AllowList allowList() {
@@ -98,7 +111,7 @@ public final class Codec {
       in.limit = (int) valueLimit;
     }
     try {
-      return new Decoder(in, limits, allowList, info, loader, types).readValue();
+      return new Decoder(in, limits, allowList, info, loader, types, javaSerialization).readValue();
     } catch (RuntimeException e) { // a safety net; the decoder checks everything it knows of
       throw new MalformedValueException("internal decoding error: " + e, e);
     } finally {

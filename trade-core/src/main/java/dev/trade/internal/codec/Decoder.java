@@ -32,16 +32,18 @@ final class Decoder {
   final InfoBinding info;
   final ClassLoader loader;
   private final TypeCache types;
+  private final boolean javaSerialization;
   private int depth;
 
   Decoder(ByteSource in, Limits limits, AllowList allowList, InfoBinding info, ClassLoader loader,
-      TypeCache types) {
+      TypeCache types, boolean javaSerialization) {
     this.in = in;
     this.limits = limits;
     this.allowList = allowList;
     this.info = info;
     this.loader = loader;
     this.types = types;
+    this.javaSerialization = javaSerialization;
   }
 
   Object readValue() throws TRADESerializationException {
@@ -82,7 +84,12 @@ final class Decoder {
       case Tags.UUID: return new UUID(in.readLong(), in.readLong());
       case Tags.INSTANT: return readInstant();
       case Tags.DURATION: return Duration.ofSeconds(in.readLong(), readNanos());
-      case Tags.JAVA: return JavaSerialization.read(this);
+      case Tags.JAVA:
+        if (!javaSerialization) {
+          throw new MalformedValueException("a Java-serialized value at offset " + in.at(-1)
+              + ", where none may be");
+        }
+        return JavaSerialization.read(this);
       default: throw new MalformedValueException(
           String.format("unknown tag 0x%02X at offset %d", tag, in.at(-1)));
     }

@@ -101,7 +101,7 @@ public final class ContainerCore implements ServiceCaller {
   }
 
   private Network startNetwork() {
-    Codec tables = new Codec(allowList, limits, InfoBinding.DESCRIPTORS);
+    Codec tables = new Codec(allowList, limits, InfoBinding.DESCRIPTORS, false);
     Network n = new Network(settings, uuid, name, host, registry, codec, tables, new Network.Host() {
       @Override
       public LocalService local(long serviceId) {

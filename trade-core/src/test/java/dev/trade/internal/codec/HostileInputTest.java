@@ -187,6 +187,17 @@ class HostileInputTest {
     assertMalformed(roomy, bytes);
   }
 
+  @Test
+  void aCodecForTablesRefusesJavaSerializedValues() throws Exception {
+    Codec tables = new Codec(AllowList.withDefaults(), Limits.DEFAULT, InfoBinding.DESCRIPTORS, false);
+    byte[] java = codec.encode(new ArrayDeque<Object>(List.of("a"))); // travels Java-serialized
+    assertEquals(Tags.JAVA, java[0]);
+    assertMalformed(tables, java);
+    byte[] inAList = codec.encode(List.of(1, new ArrayDeque<Object>(List.of("a"))));
+    assertMalformed(tables, inAList);
+    assertEquals(List.of(1, "x"), tables.decode(codec.encode(List.of(1, "x")), loader()));
+  }
+
   private static int indexOf(byte[] in, byte[] part) {
     for (int i = 0; i + part.length <= in.length; i++) {
       if (Arrays.equals(in, i, i + part.length, part, 0, part.length)) {
