@@ -288,8 +288,7 @@ final class Handshake {
       int len = Math.min(b.getShort() & 0xffff, b.remaining());
       byte[] text = new byte[len];
       b.get(text);
-      throw new IOException("refused by peer (reason " + reason + "): "
-          + new String(text, StandardCharsets.UTF_8));
+      throw new IOException("refused by peer (reason " + reason + "): " + printable(text));
     }
     if (version != Wire.VERSION && type == Wire.HELLO) {
       // Let the HELLO parser report the version mismatch with both numbers.
@@ -314,6 +313,18 @@ final class Handshake {
     int len = b.get() & 0xff;
     byte[] bytes = new byte[len];
     b.get(bytes);
-    return new String(bytes, StandardCharsets.UTF_8);
+    return printable(bytes);
+  }
+
+  /**
+   * UTF-8 text with each control character shown as '?': what a peer names, authenticated or not,
+   * ends up in log lines, and a line break in it would forge lines of its own. Settings refuse
+   * control characters in names and ids, so a well-behaved peer's text is unchanged.
+   */
+  private static String printable(byte[] bytes) {
+    String s = new String(bytes, StandardCharsets.UTF_8);
+    StringBuilder out = new StringBuilder(s.length());
+    s.codePoints().forEach(c -> out.appendCodePoint(Character.isISOControl(c) ? '?' : c));
+    return out.toString();
   }
 }

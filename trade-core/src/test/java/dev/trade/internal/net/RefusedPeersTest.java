@@ -1,12 +1,14 @@
 package dev.trade.internal.net;
 
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trade.TRADEContainer;
 import dev.trade.TRADEException;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
+import java.net.InetSocketAddress;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
@@ -96,6 +98,17 @@ class RefusedPeersTest {
     assertNeverLinked(impostor, "impostor");
     assertTrue(log.lines().stream().noneMatch(l -> l.contains("not-the-secret") || l.contains("diarcUser")),
         "a secret in the log: " + log.lines());
+  }
+
+  @Test
+  void aPeersTextCannotForgeLogLines() throws Exception {
+    String[] at = gateAddress.split("@");
+    try (RawPeer forger = RawPeer.connect(new InetSocketAddress(at[0], Integer.parseInt(at[1])))) {
+      assertThrows(Exception.class, () -> forger.handshake("x\nSEVERE: forged", "diarcUser", "n"));
+    }
+    Deadline.await(WAIT, () -> log.has(Level.WARNING, "refused connection from",
+        "other system id 'x?SEVERE: forged' (ours is 'diarc')"), "the gate's warning; have " + log.lines());
+    assertTrue(log.lines().stream().noneMatch(l -> l.contains("\nSEVERE: forged")), log.tail());
   }
 
   @Test
