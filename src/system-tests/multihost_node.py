@@ -83,6 +83,7 @@ class Node:
             "-Djava.util.logging.config.file=" + LOGGING, MAIN_CLASS,
             self.host,
             "DISCOVERYRANGE=subnet",
+            "CREDENTIALS=multihost-secret",
             "FAILURETIMEOUT=%d" % FAILURE_TIMEOUT_MS,
             "HEARTBEATINTERVAL=%d" % HEARTBEAT_MS,
         ] + list(settings)

@@ -230,6 +230,34 @@ public final class Settings {
     return (String) values.get(Key.CREDENTIALS);
   }
 
+  /**
+   * Whether CREDENTIALS is TRADE's published default while this container reaches beyond its own
+   * host (subnet discovery, or an address to listen on or connect to that is not loopback): then
+   * anyone who can reach it can join the system.
+   */
+  public boolean defaultCredentialsBeyondThisHost() {
+    if (!credentials().equals(Key.CREDENTIALS.defaultText())) {
+      return false;
+    }
+    if ((startDiscovery() || startBroadcast()) && discoveryRange() == DiscoveryRange.SUBNET) {
+      return true;
+    }
+    for (List<PeerAddress> list : List.of(serverAddresses(), connectContainers())) {
+      for (PeerAddress a : list) {
+        if (!isLoopback(a.host())) {
+          return true;
+        }
+      }
+    }
+    return false;
+  }
+
+  /** Loopback by its text alone: settings never resolve host names. */
+  private static boolean isLoopback(String host) {
+    return host.equals("localhost") || host.startsWith("127.") || host.equals("::1")
+        || host.equals("0:0:0:0:0:0:0:1");
+  }
+
   /** TRADESYSID: containers only join others of the same system id. */
   public String tradeSysId() {
     return (String) values.get(Key.TRADESYSID);

@@ -99,6 +99,11 @@ public final class Network implements AutoCloseable {
           }
         }, this::unreachable);
     this.dispatch = new Dispatch(calls, replication, this);
+    if (settings.defaultCredentialsBeyondThisHost()) {
+      LOG.log(Level.WARNING, "{0}: CREDENTIALS has its published default value, and this container"
+          + " reaches beyond this host: anyone who can reach it can join the system. Give every"
+          + " container of the system the same CREDENTIALS of its own (docs/security.md).", name);
+    }
     Handshake handshake = new Handshake(new Handshake.Identity(settings.tradeSysId(), self, name,
         host, List.of(), settings.useEncryption(), true), settings.credentials());
     this.connector = new Connector(name, handshake, (int) settings.clientSocketTimeout().toMillis(),

@@ -19,6 +19,22 @@ import org.junit.jupiter.params.provider.CsvSource;
 
 class SettingsTest {
 
+  @Test
+  void theDefaultCredentialsAreFlaggedOnlyWhereTheContainerReachesBeyondItsHost() {
+    Settings d = Settings.defaults();
+    assertFalse(d.defaultCredentialsBeyondThisHost(), "no networking");
+    assertFalse(d.with("STARTDISCOVERY", "true").with("STARTACCEPTINGCONNECTIONS", "true")
+        .with("SERVERIPS", "127.0.0.1@0").with("CONNECTCONTAINERS", "localhost@10002,[::1]@10003")
+        .defaultCredentialsBeyondThisHost(), "loopback only");
+    assertTrue(d.with("STARTDISCOVERY", "true").with("DISCOVERYRANGE", "subnet")
+        .defaultCredentialsBeyondThisHost(), "subnet discovery");
+    assertTrue(d.with("SERVERIPS", "0.0.0.0@10002").defaultCredentialsBeyondThisHost(), "any address");
+    assertTrue(d.with("CONNECTCONTAINERS", "robot2@10002").defaultCredentialsBeyondThisHost(),
+        "another host");
+    assertFalse(d.with("CONNECTCONTAINERS", "robot2@10002").with("CREDENTIALS", "lab-secret")
+        .defaultCredentialsBeyondThisHost(), "credentials of its own");
+  }
+
   /** Settings that load must build a container: its allow-list takes every pattern they accept. */
   @Test
   void everyAcceptedClassPatternIsOneTheAllowListTakes() {
