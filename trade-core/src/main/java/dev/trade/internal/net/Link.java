@@ -101,6 +101,12 @@ final class Link {
     return served.serveHere(call);
   }
 
+  /** How many of this link's calls are served by threads that no longer read it. */
+  int servedElsewhere() {
+    ServedCalls s = served;
+    return s == null ? 0 : s.servedElsewhere();
+  }
+
   /** The {@link ReadWatch}'s look at this link; see {@link ServedCalls#look}. */
   boolean watch() {
     ServedCalls s = served;

@@ -42,6 +42,13 @@ final class RemoteCalls {
   private static final Logger LOG = System.getLogger("dev.trade.net");
   /** The longest text of a failure reply that callers read, in bytes of UTF-8. */
   static final int MAX_TEXT = 64 * 1024;
+  /**
+   * The most calls of one link served at once by threads other than the one reading it (each a
+   * thread); a call read beyond them is answered "not available now" at once. A neighbour that
+   * sends calls faster than they end, to a slow service, would otherwise start threads without
+   * bound; this way the link goes on being read (a link not read is soon closed as silent).
+   */
+  static final int MAX_SERVED_PER_LINK = 512;
   private static final int MAX_IDS = 4096;
 
   /** Finds the link a frame for a container leaves by. */
@@ -191,6 +198,11 @@ final class RemoteCalls {
     UUID destination = Frames.destination(payload);
     if (!destination.equals(self)) {
       forward(from, Wire.CALL, payload, destination);
+      return true;
+    }
+    if (from.servedElsewhere() >= MAX_SERVED_PER_LINK) {
+      replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, "Service not available now: container "
+          + self + " serves " + MAX_SERVED_PER_LINK + " calls from this link at once already");
       return true;
     }
     return from.serveHere(() -> serve(from, payload));

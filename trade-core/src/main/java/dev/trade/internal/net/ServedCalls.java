@@ -1,12 +1,15 @@
 package dev.trade.internal.net;
 
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 
 /**
  * The calls a link's reading thread serves itself ({@link #serveHere}), and the moves of reading
  * to another thread that keep the link read meanwhile: when the {@link ReadWatch} finds a call
  * served for a whole tick, or whole frames waiting behind it ({@link #look}), and at once when a
- * served call waits for a remote reply ({@link #releaseReading}). Safe for concurrent use.
+ * served call waits for a remote reply ({@link #releaseReading}). Each move leaves a thread serving
+ * its call; {@link #servedElsewhere} counts them, so that a link's calls cannot take threads
+ * without bound (see {@link RemoteCalls#MAX_SERVED_PER_LINK}). Safe for concurrent use.
  */
 final class ServedCalls {
   /** What the current thread serves on a link's reading thread, if anything. */
@@ -20,6 +23,8 @@ final class ServedCalls {
   private final AtomicLong work = new AtomicLong();
   // The thread whose call 'work' counts while it is odd.
   private volatile Thread worker;
+  // Calls whose thread handed reading on and still serves them.
+  private final AtomicInteger servedElsewhere = new AtomicInteger();
   // What the watch saw at its last look; read and written by the watch thread only.
   private long watchSeen;
 
@@ -52,7 +57,16 @@ final class ServedCalls {
     } finally {
       SERVING.set(null);
     }
-    return work.compareAndSet(stamp, stamp + 1);
+    if (work.compareAndSet(stamp, stamp + 1)) {
+      return true;
+    }
+    servedElsewhere.decrementAndGet(); // reading moved on while this call ran: its thread is free
+    return false;
+  }
+
+  /** How many calls of this link are served now by threads that no longer read it. */
+  int servedElsewhere() {
+    return servedElsewhere.get();
   }
 
   /**
@@ -93,6 +107,7 @@ final class ServedCalls {
   /** Moves reading to another thread if {@code stamp} is still the call being served. */
   private void handOff(long stamp) {
     if ((stamp & 1) == 1 && work.compareAndSet(stamp, stamp + 1)) {
+      servedElsewhere.incrementAndGet();
       moveReading.run();
     }
   }
