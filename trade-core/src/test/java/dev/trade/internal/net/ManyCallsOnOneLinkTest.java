@@ -43,7 +43,10 @@ class ManyCallsOnOneLinkTest {
   void callsBeyondTheBoundAreAnsweredAtOnceAndTheRestWhenTheyEnd() throws Exception {
     Gate gate = new Gate();
     try (TRADEContainer provider = TRADEContainer.builder().name("provider")
-        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build()) {
+        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
+        // The caller sends nothing once its calls are out: on a slow machine the provider must
+        // not find it silent before the last of them entered the gate.
+        .property("FAILURETIMEOUT", "60000").build()) {
       provider.registerAllServices(gate); // the container's first service: id 1
       String[] at = provider.getServerAddresses().get(0).split("@");
       try (RawPeer caller = RawPeer.connect(new InetSocketAddress(at[0], Integer.parseInt(at[1])))) {

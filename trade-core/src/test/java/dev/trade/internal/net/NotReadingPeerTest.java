@@ -39,7 +39,7 @@ class NotReadingPeerTest {
     try (LogCapture log = new LogCapture();
         TRADEContainer provider = TRADEContainer.builder().name("provider")
             .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
-            .property("HEARTBEATINTERVAL", "100").property("FAILURETIMEOUT", "600").build()) {
+            .property("HEARTBEATINTERVAL", "100").property("FAILURETIMEOUT", "1500").build()) {
       provider.registerAllServices(new Probe());
       String[] at = provider.getServerAddresses().get(0).split("@");
       try (RawPeer sink = RawPeer.connect(new InetSocketAddress(at[0], Integer.parseInt(at[1])))) {
@@ -55,7 +55,7 @@ class NotReadingPeerTest {
         }
         sink.send(requests.toByteArray());
         Deadline.await(Duration.ofSeconds(30), () -> log.has(Level.INFO,
-            "provider: link to sink closed: not reading: a write has waited", "(FAILURETIMEOUT=600)"),
+            "provider: link to sink closed: not reading: a write has waited", "(FAILURETIMEOUT=1500)"),
             "the link closed for its stalled write, in:\n" + log.tail());
       }
       // The control thread is free again: the container still works.
