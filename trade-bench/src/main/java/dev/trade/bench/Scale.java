@@ -94,13 +94,31 @@ final class Scale {
           problems.append(line.length() > 300 ? line.substring(0, 300) + "..." : line).append("; ");
         }
       }
+      // CPU first, from every JVM at once: the work until convergence, not the full collections
+      // of the heap measurement below.
+      long cpuMillis = 0;
+      for (Jvm j : jvms) {
+        try {
+          j.send("CPU");
+        } catch (IOException e) {
+          // Its answer is missed below.
+        }
+      }
+      for (int k = 0; k < jvms.size(); k++) {
+        try {
+          cpuMillis += Long.parseLong(jvms.get(k).await("CPU", 60_000));
+        } catch (IOException e) {
+          problems.append("JVM ").append(k).append(" gave no CPU figure: ").append(e.getMessage())
+              .append("; ");
+        }
+      }
       List<long[]> heaps = new ArrayList<>();
       for (int k = 0; k < jvms.size(); k++) {
         try {
           jvms.get(k).send("HEAP");
           String[] h = jvms.get(k).await("HEAP", 60_000).split(" ");
           heaps.add(new long[] {Long.parseLong(h[0]), Long.parseLong(h[1]), Long.parseLong(h[2]),
-              Long.parseLong(h[3]), Long.parseLong(h[4]), Long.parseLong(h[5])});
+              Long.parseLong(h[3]), Long.parseLong(h[4])});
         } catch (IOException e) {
           heaps.add(null);
           problems.append("JVM ").append(k).append(" (").append(counts.get(k))
@@ -113,13 +131,11 @@ final class Scale {
       long threads = 0;
       long links = 0;
       long mostLinks = 0;
-      long cpuMillis = 0;
       for (int k = 0; k < jvms.size(); k++) {
         long[] h = heaps.get(k);
         if (h != null) {
           threads += h[2];
           links += h[3];
-          cpuMillis += h[5];
           mostLinks = Math.max(mostLinks, h[4]);
           if (k > 0) {
             bigHeap += h[1] - h[0];

@@ -22,10 +22,11 @@ import java.util.concurrent.Future;
  * other (discovery on loopback), each registering one service, prints {@code BUILT <epoch-us>} when
  * all are, and {@code CONVERGED <epoch-us>} once every one of them sees all
  * {@code total} services of the system (or {@code TIMEOUT <seen...>} 60 s after they were built).
- * Then it prints {@code HEAP <baseline> <after> <threads> <links> <most links> <cpu ms>}: heap in
- * use after full GCs before the containers were built and with them running, the links its
- * containers hold, in all and the most one of them holds, and the CPU time this JVM used since GO
- * (until asked, once every JVM converged). Exits when standard input closes (at most 10 min).
+ * Asked {@code CPU} (once every JVM converged) it prints {@code CPU <ms>}, the CPU time this JVM
+ * used since GO. Then, asked {@code HEAP}, it prints
+ * {@code HEAP <baseline> <after> <threads> <links> <most links>}: heap in use after full GCs
+ * before the containers were built and with them running, and the links its containers hold, in
+ * all and the most one of them holds. Exits when standard input closes (at most 10 min).
  *
  * <p>With {@code -Dbench.progress=true} it also writes to standard error (the JVM's log) how long
  * each container took to build and register, and once a second until convergence how many
@@ -183,11 +184,17 @@ public final class ScaleNode {
       System.out.println(seen);
     }
     System.out.flush();
-    // The other JVMs may still be converging; measure once everyone is done.
+    // The other JVMs may still be converging; measure once everyone is done, every JVM at once
+    // (asked one after the other for their heaps, the later ones would count the time the
+    // earlier ones spend in full collections).
+    if (!"CPU".equals(in.readLine())) {
+      return;
+    }
+    System.out.println("CPU " + (processCpuNanos() - goCpu) / 1_000_000);
+    System.out.flush();
     if (!"HEAP".equals(in.readLine())) {
       return;
     }
-    long cpu = processCpuNanos() - goCpu; // before the full collections below
     long after = usedHeapAfterGc();
     int links = 0;
     int mostLinks = 0;
@@ -197,8 +204,7 @@ public final class ScaleNode {
       mostLinks = Math.max(mostLinks, n);
     }
     System.out.println("HEAP " + baseline + " " + after + " "
-        + ManagementFactory.getThreadMXBean().getThreadCount() + " " + links + " " + mostLinks
-        + " " + cpu / 1_000_000);
+        + ManagementFactory.getThreadMXBean().getThreadCount() + " " + links + " " + mostLinks);
     System.out.flush();
     while (in.readLine() != null) {
       // Keep the containers up until the parent closes our input.
