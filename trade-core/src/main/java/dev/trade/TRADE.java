@@ -7,8 +7,10 @@ import java.util.Collection;
  * The JVM's default {@link TRADEContainer}, as static methods: the API TRADE users write against.
  *
  * <p>The default container is created on first use, from the configuration found by
- * {@link TRADEContainer.Builder#loadConfiguration()}, and closed by a JVM shutdown hook. Every
- * method is safe to call from any thread.
+ * {@link TRADEContainer.Builder#loadConfiguration()}, and lives as long as the JVM: it is not
+ * closed at exit, so that components' own shutdown hooks can still deregister through it (hooks
+ * run at the same time, and one that closed it would make theirs fail); its links end with the
+ * process, which its peers notice at once. Every method is safe to call from any thread.
  *
  * <pre>{@code
  * TRADE.registerAllServices(new RobotArm(), "MyRobot");
@@ -38,9 +40,6 @@ public final class TRADE {
         c = defaultContainer;
         if (c == null) {
           c = TRADEContainer.builder().loadConfiguration().build();
-          TRADEContainer created = c;
-          Runtime.getRuntime().addShutdownHook(
-              new Thread(created::close, "trade-default-container-shutdown"));
           defaultContainer = c;
         }
       }
