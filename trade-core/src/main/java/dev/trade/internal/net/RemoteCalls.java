@@ -24,7 +24,6 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Predicate;
 
@@ -57,7 +56,16 @@ final class RemoteCalls {
     Link nextHop(UUID container);
   }
 
-  private record Pending(CompletableFuture<byte[]> reply, UUID destination, UUID via) {}
+  /** A call sent and not answered yet, until {@code deadline} (nanoTime). */
+  record Pending(CompletableFuture<byte[]> reply, UUID destination, UUID via, long deadline,
+      ServiceDescriptor service, long timeoutNanos) {
+    /** What the caller gets when the deadline passed. */
+    TRADETimeoutException timedOut() {
+      return new TRADETimeoutException("Service " + service.signature() + " of container "
+          + service.containerName() + " did not answer within "
+          + TimeUnit.NANOSECONDS.toMillis(timeoutNanos) + " ms");
+    }
+  }
 
   private final UUID self;
   private final Codec codec;
@@ -70,6 +78,7 @@ final class RemoteCalls {
   /** Parsed container ids of the services called (parsing one costs more than a lookup). */
   private final Map<String, UUID> containerIds = new ConcurrentHashMap<>();
   private final ReplyWait replyWait = new ReplyWait();
+  private final Deadlines deadlines;
 
   /** @param maxFrame the largest frame (after its length field) that peers accept: MAXFRAMESIZE */
   RemoteCalls(UUID self, Codec codec, Router router, Network.Host host,
@@ -80,6 +89,7 @@ final class RemoteCalls {
     this.host = host;
     this.replies = new Replies(self, router, timer, maxFrame);
     this.maxFrame = maxFrame;
+    this.deadlines = new Deadlines(timer, pending);
   }
 
   /** Calls a service of another container and waits for its reply until the deadline. */
@@ -107,8 +117,10 @@ final class RemoteCalls {
       throw new TRADESerializationException("Cannot call " + d.signature() + ": its arguments need "
           + (frame.length - 4) + " bytes, more than MAXFRAMESIZE=" + maxFrame);
     }
-    Pending p = new Pending(new CompletableFuture<>(), destination, link.peerId);
+    Pending p = new Pending(new CompletableFuture<>(), destination, link.peerId, deadlineNanos, d,
+        remaining);
     pending.put(id, p);
+    deadlines.watch();
     // A service calling out while it is served on a link's reading thread: the reply may come over
     // that link, so it must go on being read.
     ServedCalls.releaseReading();
@@ -131,12 +143,7 @@ final class RemoteCalls {
     }
     byte[] reply;
     try {
-      reply = replyWait.await(link, borrowed, p.reply, sent, deadlineNanos);
-    } catch (TimeoutException e) {
-      pending.remove(id);
-      throw new TRADETimeoutException("Service " + d.signature() + " of container "
-          + d.containerName() + " did not answer within "
-          + TimeUnit.NANOSECONDS.toMillis(remaining) + " ms");
+      reply = replyWait.await(link, borrowed, p.reply, sent);
     } catch (ExecutionException e) {
       throw (TRADEException) e.getCause();
     } catch (InterruptedException e) {

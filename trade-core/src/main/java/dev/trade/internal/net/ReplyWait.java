@@ -3,7 +3,6 @@ package dev.trade.internal.net;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicInteger;
 
 /**
@@ -52,13 +51,14 @@ final class ReplyWait {
   }
 
   /**
-   * Waits for {@code reply} to the call sent over {@code link} until the deadline.
+   * Waits for {@code reply} to the call sent over {@code link}. Without a timeout of its own: the
+   * call's deadline completes {@code reply} when it passes ({@link Deadlines}).
    *
    * @param borrowed what {@link #borrow} said for the call
    * @param sent when the call was sent ({@link System#nanoTime})
    */
-  byte[] await(Link link, boolean borrowed, CompletableFuture<byte[]> reply, long sent,
-      long deadlineNanos) throws TimeoutException, ExecutionException, InterruptedException {
+  byte[] await(Link link, boolean borrowed, CompletableFuture<byte[]> reply, long sent)
+      throws ExecutionException, InterruptedException {
     try {
       boolean lone = waiting.getAndIncrement() == 0;
       long estimate = roundTrip;
@@ -80,8 +80,7 @@ final class ReplyWait {
           link.role.giveBack(!reply.isDone() || waiting.get() > 1);
         }
       }
-      byte[] result = reply.isDone() ? reply.get()
-          : reply.get(Math.max(0, deadlineNanos - System.nanoTime()), TimeUnit.NANOSECONDS);
+      byte[] result = reply.get();
       long took = System.nanoTime() - sent;
       roundTrip += (Math.min(took, 16 * MAX_SPIN_NANOS) - roundTrip) >> 3;
       return result;

@@ -8,18 +8,18 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import dev.trade.TRADETimeoutException;
 import java.net.Socket;
 import java.util.UUID;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.TimeoutException;
 import org.junit.jupiter.api.Test;
 
 /**
- * Waiting for a reply, spinning or not: the reply arrives however late it comes within the deadline,
- * the deadline holds, a failure reaches the caller, and no outcome leaves the wait counted (a
- * counted caller would stop every later lone caller from spinning).
+ * Waiting for a reply, spinning or not: the reply arrives however late it comes, a failure (the
+ * deadline's, completed by {@link Deadlines}, among them) reaches the caller, and no outcome
+ * leaves the wait counted (a counted caller would stop every later lone caller from spinning).
  */
 class ReplyWaitTest {
   private final ReplyWait wait = new ReplyWait();
@@ -31,19 +31,28 @@ class ReplyWaitTest {
       byte[] body = {(byte) delayMs};
       CompletableFuture.delayedExecutor(delayMs, TimeUnit.MILLISECONDS).execute(() -> reply.complete(body));
       long sent = System.nanoTime();
-      assertArrayEquals(body, wait.await(null, false, reply, sent, sent + TimeUnit.SECONDS.toNanos(5)));
+      assertArrayEquals(body, wait.await(null, false, reply, sent));
       assertEquals(0, wait.waiting());
     }
   }
 
   @Test
-  void noReplyFailsAtTheDeadline() {
+  void aDeadlineThatPassesReachesTheWaitingCaller() {
     long sent = System.nanoTime();
-    assertThrows(TimeoutException.class, () -> wait.await(null, false, new CompletableFuture<>(), sent,
-        sent + TimeUnit.MILLISECONDS.toNanos(100)));
+    ExecutionException e = assertThrows(ExecutionException.class,
+        () -> wait.await(null, false, failsAfter(100), sent));
+    assertTrue(e.getCause() instanceof TRADETimeoutException, e.toString());
     long waited = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - sent);
     assertTrue(waited >= 90, "gave up after " + waited + " ms");
     assertEquals(0, wait.waiting());
+  }
+
+  /** A reply that fails as {@link Deadlines} fails it, after {@code ms}. */
+  private static CompletableFuture<byte[]> failsAfter(long ms) {
+    CompletableFuture<byte[]> reply = new CompletableFuture<>();
+    CompletableFuture.delayedExecutor(ms, TimeUnit.MILLISECONDS)
+        .execute(() -> reply.completeExceptionally(new TRADETimeoutException("deadline")));
+    return reply;
   }
 
   @Test
@@ -52,7 +61,7 @@ class ReplyWaitTest {
     CompletableFuture<byte[]> reply = CompletableFuture.failedFuture(cause);
     long sent = System.nanoTime();
     ExecutionException e = assertThrows(ExecutionException.class,
-        () -> wait.await(null, false, reply, sent, sent + TimeUnit.SECONDS.toNanos(5)));
+        () -> wait.await(null, false, reply, sent));
     assertSame(cause, e.getCause());
     assertEquals(0, wait.waiting());
   }
@@ -66,12 +75,12 @@ class ReplyWaitTest {
       assertTrue(link.role.callerWaits());
       long sent = System.nanoTime();
       assertArrayEquals(new byte[] {1}, wait.await(link, true,
-          CompletableFuture.completedFuture(new byte[] {1}), sent, sent + TimeUnit.SECONDS.toNanos(5)));
+          CompletableFuture.completedFuture(new byte[] {1}), sent));
       assertFalse(link.role.callerWaits(), "counted after its reply");
 
       link.role.borrow(); // as borrow does (it may decline now: the first reply took long)
-      assertThrows(TimeoutException.class, () -> wait.await(link, true, new CompletableFuture<>(),
-          System.nanoTime(), System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(20)));
+      assertThrows(ExecutionException.class,
+          () -> wait.await(link, true, failsAfter(20), System.nanoTime()));
       assertFalse(link.role.callerWaits(), "counted after its deadline");
 
       link.role.borrow();
