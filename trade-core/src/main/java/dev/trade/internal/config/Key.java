@@ -54,11 +54,6 @@ enum Key {
     this.type = type;
   }
 
-  /** The default, as text. */
-  String defaultText() {
-    return defaultText;
-  }
-
   private static Map<String, Key> byName() {
     Map<String, Key> map = new LinkedHashMap<>();
     for (Key k : values()) {

@@ -236,7 +236,7 @@ public final class Settings {
    * anyone who can reach it can join the system.
    */
   public boolean defaultCredentialsBeyondThisHost() {
-    if (!credentials().equals(Key.CREDENTIALS.defaultText())) {
+    if (!credentials().equals(DEFAULTS.credentials())) {
       return false;
     }
     if ((startDiscovery() || startBroadcast()) && discoveryRange() == DiscoveryRange.SUBNET) {
