@@ -254,8 +254,8 @@ public final class Settings {
 
   /** Loopback by its text alone: settings never resolve host names. */
   private static boolean isLoopback(String host) {
-    return host.equals("localhost") || host.startsWith("127.") || host.equals("::1")
-        || host.equals("0:0:0:0:0:0:0:1");
+    InetAddress literal = Addresses.literal(host);
+    return literal != null ? literal.isLoopbackAddress() : host.equalsIgnoreCase("localhost");
   }
 
   /** TRADESYSID: containers only join others of the same system id. */
