@@ -20,6 +20,10 @@ class StepFailure(Exception):
     """A step of the scenario failed; the message says what was expected and what happened."""
 
 
+# Where `ip netns add` keeps its namespaces (a tmpfs of the test's own: see private_netns_dir).
+NETNS_DIR = "/var/run/netns"
+
+
 # ---------------------------------------------------------------------------------------------
 # Availability
 
@@ -30,7 +34,7 @@ def unavailable_reason():
         return "not Linux"
     if os.geteuid() != 0:
         return "not running as root (network namespaces and veth pairs need root)"
-    for tool in ("ip", "unshare", "mount"):
+    for tool in ("ip", "unshare", "nsenter", "mount"):
         if shutil.which(tool) is None:
             return "'%s' not found on PATH" % tool
     if java_binary() is None:
@@ -46,7 +50,7 @@ def private_netns_dir():
     """Puts a tmpfs of our own on `ip netns`' directory, in our private mount namespace: the
     namespace names and their mounts then live only as long as this test, even if it is killed,
     and parallel runs do not see each other's. Returns why that failed, or None."""
-    path = "/var/run/netns"
+    path = NETNS_DIR
     try:
         os.makedirs(path, exist_ok=True)
     except OSError as e:
@@ -57,12 +61,20 @@ def private_netns_dir():
     return None
 
 
+def nsenter(ns):
+    """The command prefix that runs a program in network namespace ns, and in nothing else new.
+    Not `ip netns exec`: that also makes a mount namespace and mounts a sysfs in it for every
+    program, a mount that sandboxed machines may refuse now and then, and that nothing here needs
+    (the JDK reads interfaces through ioctl and /proc/net, which follow the network namespace)."""
+    return ["nsenter", "--net=" + os.path.join(NETNS_DIR, ns), "--"]
+
+
 def probe_netns():
     """Creates a namespace with a veth pair and removes it: does `ip netns` work here?"""
     ns = "trade-probe-%d" % os.getpid()
     steps = [["ip", "netns", "add", ns],
              ["ip", "-n", ns, "link", "add", "p0", "type", "veth", "peer", "name", "p1"],
-             ["ip", "netns", "exec", ns, "true"]]
+             nsenter(ns) + ["true"]]
     try:
         for cmd in steps:
             r = run(cmd, check=False)
@@ -119,7 +131,7 @@ class Topology:
             run(["ip", "-n", self.ns[host], "link", "set", nif, "up", "multicast", "on"])
             run(["ip", "-n", self.ns[peer], "link", "set", peer_nif, "up", "multicast", "on"])
         # C is a host on two networks, not a router: only TRADE's forwarding may connect A and B.
-        run(["ip", "netns", "exec", self.ns["C"], "sysctl", "-qw", "net.ipv4.ip_forward=0"])
+        run(nsenter(self.ns["C"]) + ["sysctl", "-qw", "net.ipv4.ip_forward=0"])
         self.wait_carrier()
 
     def wait_carrier(self, timeout=5.0):
@@ -141,7 +153,7 @@ class Topology:
             time.sleep(0.05)
 
     def exec_prefix(self, host):
-        return ["ip", "netns", "exec", self.ns[host]]
+        return nsenter(self.ns[host])
 
     def check_isolation(self):
         """A and B cannot reach each other at the IP level; C forwards no IP."""
@@ -150,7 +162,7 @@ class Topology:
             r = run(["ip", "-n", self.ns[host], "route", "get", target], check=False)
             if r.returncode == 0:
                 raise StepFailure("%s has a route to %s (%s): %s" % (host, other, target, r.stdout.strip()))
-        r = run(["ip", "netns", "exec", self.ns["C"], "sysctl", "-n", "net.ipv4.ip_forward"])
+        r = run(nsenter(self.ns["C"]) + ["sysctl", "-n", "net.ipv4.ip_forward"])
         if r.stdout.strip() != "0":
             raise StepFailure("C forwards IP (net.ipv4.ip_forward=%s)" % r.stdout.strip())
         for host in "ABC":

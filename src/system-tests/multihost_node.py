@@ -172,7 +172,21 @@ class Node:
 
     def _context(self):
         recent = [l.text for l in self.lines[-8:]]
-        return "; its last lines: %s; log: %s" % (recent, self.err_path)
+        context = "; its last lines: %s; log: %s" % (recent, self.err_path)
+        if self.proc.poll() is not None:
+            # It exited: why is in its log (an exception, or a JVM or nsenter that did not start),
+            # and CI shows only what the test prints.
+            context += "; the log ends: %s" % self._log_tail()
+        return context
+
+    def _log_tail(self, count=8):
+        """The log's last lines but stack frames: an exception's message and its causes."""
+        try:
+            with open(self.err_path, errors="replace") as f:
+                lines = [l.rstrip("\n") for l in f if not re.match(r"\s+(at |\.\.\. )", l)]
+            return lines[-count:]
+        except OSError as e:
+            return ["(cannot read it: %s)" % e]
 
     def kill(self, sig=signal.SIGKILL):
         before = time.time()
