@@ -31,8 +31,18 @@ public final class BadPacketException extends Exception {
     BAD_HMAC,
     /** Correctly signed, or with a readable header, but a length, string or address is invalid. */
     MALFORMED,
-    /** A sequence number not above the highest one already seen from that container. */
+    /**
+     * A sequence number not above the highest one already seen from that container, on a packet
+     * sent more than {@link ReplayGuard#OVERTAKEN_MILLIS} before that one.
+     */
     REPLAYED,
+    /**
+     * A sequence number not above the highest one already seen from that container, on a packet
+     * sent at most {@link ReplayGuard#OVERTAKEN_MILLIS} before that one: delivered twice, or
+     * overtaken by a later one (a sender's answers and its announcements reach a container on
+     * different sockets). Its news is no newer than what was accepted. Counted, logged at DEBUG.
+     */
+    OVERTAKEN,
     /** A timestamp too far from our clock: an old packet replayed, or unsynchronised clocks. */
     CLOCK_SKEW,
     /** One of this container's own announcements, looped back to it. */

@@ -16,8 +16,9 @@ import java.util.concurrent.atomic.LongAdder;
  *
  * <p>Every drop is logged at DEBUG. Once per {@code reportIntervalNanos} for each (reason, sender
  * address) pair, a drop is also logged at INFO or WARNING with advice, and with the number of
- * such drops held back since the last report. Our own looped-back packets are only counted: every
- * container hears its own.
+ * such drops held back since the last report. Our own looped-back packets, and packets overtaken
+ * by a later one of the same sender, are only counted: every container hears its own, and every
+ * start beside others has a few overtaken ones.
  *
  * <p>{@link #record} is called from the receive thread only; {@link #counts()} may be called from
  * any thread.
@@ -55,7 +56,7 @@ final class Drops {
       log.log(Level.DEBUG, "Dropped a discovery packet from {0} ({1}): {2}",
           from.getHostAddress(), reason, e.getMessage());
     }
-    if (reason == Reason.OWN) {
+    if (reason == Reason.OWN || reason == Reason.OVERTAKEN) {
       return;
     }
     Source key = new Source(reason, from);

@@ -16,9 +16,12 @@ import java.util.Map;
  *       of a host whose clock is off by more than the tolerance, so the log line says "synchronise
  *       the clocks", and {@link Duration#ZERO} turns the check off for hosts that cannot.
  *   <li><b>Sequence:</b> per sender container id, the highest sequence accepted so far; a packet
- *       whose sequence is not above it is {@link Reason#REPLAYED}. Container ids are unique per
- *       incarnation, so a restarted container starts a new count instead of being taken for a
- *       replay.
+ *       whose sequence is not above it is dropped. Container ids are unique per incarnation, so a
+ *       restarted container starts a new count instead of being taken for a replay. The drop is
+ *       {@link Reason#OVERTAKEN} when the sender sent it at most {@link #OVERTAKEN_MILLIS} before
+ *       the accepted one (both timestamps are the sender's clock): every start of containers side
+ *       by side has a few, since answers and announcements arrive on different sockets and the
+ *       receive thread reads them in its own order. Otherwise it is {@link Reason#REPLAYED}.
  * </ol>
  * Memory is bounded: beyond {@code maxSenders} the sender heard from least recently is forgotten
  * (only packets with a valid HMAC get here, so only members of the system can fill the table).
@@ -29,9 +32,11 @@ import java.util.Map;
 final class ReplayGuard {
   static final int DEFAULT_MAX_SENDERS = 4096;
   static final Duration DEFAULT_MAX_CLOCK_SKEW = Duration.ofSeconds(30);
+  /** How much earlier than the accepted packet a stale one may be sent to count as overtaken. */
+  static final long OVERTAKEN_MILLIS = 1000;
 
   private final long maxSkewMillis;
-  private final Map<String, Long> highest;
+  private final Map<String, Latest> highest;
 
   /**
    * @param maxSenders how many senders to remember, at least 1
@@ -50,7 +55,7 @@ final class ReplayGuard {
       private static final long serialVersionUID = 1L;
 
       @Override
-      protected boolean removeEldestEntry(Map.Entry<String, Long> eldest) {
+      protected boolean removeEldestEntry(Map.Entry<String, Latest> eldest) {
         return size() > maxSenders;
       }
     };
@@ -73,12 +78,14 @@ final class ReplayGuard {
             + " ms): an old packet replayed, or clocks not synchronised");
       }
     }
-    Long last = highest.get(a.containerId());
-    if (last != null && a.sequence() <= last) {
-      throw new BadPacketException(Reason.REPLAYED, "sequence " + a.sequence() + " of container '"
-          + a.containerName() + "' (" + a.containerId() + "), already at " + last);
+    Latest last = highest.get(a.containerId());
+    if (last != null && a.sequence() <= last.sequence) {
+      boolean overtaken = last.timestampMillis - a.timestampMillis() <= OVERTAKEN_MILLIS;
+      throw new BadPacketException(overtaken ? Reason.OVERTAKEN : Reason.REPLAYED,
+          "sequence " + a.sequence() + " of container '" + a.containerName() + "' ("
+          + a.containerId() + "), already at " + last.sequence);
     }
-    highest.put(a.containerId(), a.sequence());
+    highest.put(a.containerId(), new Latest(a.sequence(), a.timestampMillis()));
     return last == null;
   }
 
@@ -86,4 +93,7 @@ final class ReplayGuard {
   int size() {
     return highest.size();
   }
+
+  /** The highest sequence accepted from a sender, and when the sender sent it. */
+  private record Latest(long sequence, long timestampMillis) {}
 }

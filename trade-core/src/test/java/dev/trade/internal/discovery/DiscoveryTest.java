@@ -274,10 +274,18 @@ class DiscoveryTest {
       assertEquals(1, ra.drops(Reason.BAD_HMAC));
       long counted = a.dropCounts().values().stream().mapToLong(Long::longValue).sum();
       assertEquals(expected, counted);
-      // Still listening: a valid announcement is heard, and the same one again is a replay.
+      // Still listening: a valid announcement is heard; sent again, just after, it counts as
+      // overtaken (delivered twice), and an older one after a newer one as a replay.
+      byte[] old = Fixtures.announcement("r", 1, System.currentTimeMillis() - 5000)
+          .encode(Fixtures.KEY);
+      byte[] current = Fixtures.announcement("r", 2).encode(Fixtures.KEY);
       ch.send(ByteBuffer.wrap(valid), target);
       ra.awaitHeard("t", 1);
       ch.send(ByteBuffer.wrap(valid), target);
+      ra.awaitDrops(Reason.OVERTAKEN, 1);
+      ch.send(ByteBuffer.wrap(current), target);
+      ra.awaitHeard("r", 1);
+      ch.send(ByteBuffer.wrap(old), target);
       ra.awaitDrops(Reason.REPLAYED, 1);
     }
   }

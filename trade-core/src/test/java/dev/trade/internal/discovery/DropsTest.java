@@ -71,6 +71,19 @@ class DropsTest {
     assertEquals(0L, drops.counts().get(Reason.BAD_HMAC));
   }
 
+  @Test
+  void overtakenPacketsAreOnlyCountedWhileReplaysAreReported() throws Exception {
+    InetAddress from = InetAddress.getByName("10.0.0.5");
+    drops.record(new BadPacketException(Reason.OVERTAKEN, "sequence 5 of container 'arm' (c1),"
+        + " already at 6"), from, 0);
+    assertEquals(List.of(), log.above(Level.DEBUG));
+    assertEquals(1L, drops.counts().get(Reason.OVERTAKEN));
+    drops.record(new BadPacketException(Reason.REPLAYED, "sequence 5 of container 'arm' (c1),"
+        + " already at 6"), from, 0);
+    assertEquals(List.of("INFO Ignoring announcements from 10.0.0.5: replayed: sequence 5 of"
+        + " container 'arm' (c1), already at 6"), log.above(Level.DEBUG));
+  }
+
   /** Keeps "LEVEL message" lines, formatted as java.util.logging would. */
   private static final class RecordingLogger implements Logger {
     private final List<Level> levels = new ArrayList<>();

@@ -27,9 +27,12 @@ final class Fixtures {
   }
 
   static Announcement announcement(String containerId, long sequence) {
+    return announcement(containerId, sequence, System.currentTimeMillis());
+  }
+
+  static Announcement announcement(String containerId, long sequence, long timestampMillis) {
     return new Announcement(1, SYSTEM, containerId, "robot-" + containerId,
-        List.of(address("127.0.0.1", 4000), address("::1", 4001)), sequence,
-        System.currentTimeMillis());
+        List.of(address("127.0.0.1", 4000), address("::1", 4001)), sequence, timestampMillis);
   }
 
   /**

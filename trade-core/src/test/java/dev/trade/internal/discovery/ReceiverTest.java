@@ -43,11 +43,14 @@ class ReceiverTest {
     receiver.handle(first, first.length, FROM);
     byte[] second = announcement("other", 2).encode(KEY);
     receiver.handle(second, second.length, FROM);
+    byte[] old = announcement("other", 1, System.currentTimeMillis() - 5000).encode(KEY);
+    receiver.handle(old, old.length, FROM);
 
     assertEquals(List.of(1L, 2L), delivered.stream().map(Announcement::sequence).toList());
     assertEquals(1, newcomers.get(), "only the first announcement of a container is news");
     assertEquals(1L, receiver.dropCounts().get(Reason.OWN));
-    assertEquals(1L, receiver.dropCounts().get(Reason.REPLAYED));
+    assertEquals(1L, receiver.dropCounts().get(Reason.OVERTAKEN), "the first one twice");
+    assertEquals(1L, receiver.dropCounts().get(Reason.REPLAYED), "one sent 5 s before");
     assertEquals(1, recorder.drops(Reason.REPLAYED));
     assertEquals(Reason.values().length, receiver.dropCounts().size());
   }

@@ -16,12 +16,24 @@ class ReplayGuardTest {
 
   @Test
   void acceptsGrowingSequencesAndRejectsRepeatsAndOlderOnes() throws BadPacketException {
-    assertTrue(guard.check(at("a", 5, NOW), NOW));
+    assertTrue(guard.check(at("a", 5, NOW - 5000), NOW));
     assertFalse(guard.check(at("a", 6, NOW), NOW));
     assertEquals("sequence 6 of container 'name-a' (a), already at 6",
-        rejected(Reason.REPLAYED, at("a", 6, NOW)).getMessage());
-    rejected(Reason.REPLAYED, at("a", 2, NOW));
+        rejected(Reason.OVERTAKEN, at("a", 6, NOW)).getMessage());
+    assertEquals("sequence 5 of container 'name-a' (a), already at 6",
+        rejected(Reason.REPLAYED, at("a", 5, NOW - 5000)).getMessage());
     assertTrue(guard.check(at("b", 1, NOW), NOW), "senders are counted separately");
+  }
+
+  @Test
+  void aStalePacketSentWithinASecondOfTheAcceptedOneWasOvertakenNotReplayed()
+      throws BadPacketException {
+    guard.check(at("a", 7, NOW), NOW);
+    rejected(Reason.OVERTAKEN, at("a", 6, NOW - ReplayGuard.OVERTAKEN_MILLIS));
+    rejected(Reason.REPLAYED, at("a", 6, NOW - ReplayGuard.OVERTAKEN_MILLIS - 1));
+    rejected(Reason.OVERTAKEN, at("a", 7, NOW), "delivered twice");
+    guard.check(at("a", 8, NOW + 10), NOW);
+    rejected(Reason.REPLAYED, at("a", 1, NOW - 20_000));
   }
 
   @Test
@@ -61,8 +73,12 @@ class ReplayGuardTest {
   }
 
   private BadPacketException rejected(Reason reason, Announcement a) {
-    BadPacketException e = assertThrows(BadPacketException.class, () -> guard.check(a, NOW));
-    assertEquals(reason, e.reason());
+    return rejected(reason, a, "");
+  }
+
+  private BadPacketException rejected(Reason reason, Announcement a, String why) {
+    BadPacketException e = assertThrows(BadPacketException.class, () -> guard.check(a, NOW), why);
+    assertEquals(reason, e.reason(), why);
     return e;
   }
 
