@@ -261,7 +261,9 @@ public final class TRADEContainer implements AutoCloseable {
   }
 
   /**
-   * Deregisters every service of this container and disconnects it. Idempotent.
+   * Deregisters every service of this container and disconnects it. Idempotent. Returns once
+   * every connection is closed: at once, normally, and within about 2 s when a connected container
+   * does not read (its connection is then closed without a goodbye).
    *
    * <p>Notifications of this container stop first: disconnecting makes every other container's
    * services unreachable from here, and reporting them as "left" to listeners that are closing

@@ -41,6 +41,8 @@ final class Link {
   private final LinkInput input;
   private final LinkOutput output;
   private final AtomicBoolean closed = new AtomicBoolean();
+  /** Completed when the socket is closed. */
+  private final CompletableFuture<Void> socketClosed = new CompletableFuture<>();
   /** Why the link was closed, by whoever closed it first; null while it is open. */
   private volatile String closeReason;
   // Set when the link is to close once the queued frames are written.
@@ -375,7 +377,13 @@ final class Link {
         // Closing is best effort; the reader notices either way.
       }
       role.closing(); // a thread that lent reading takes it back, and ends it
+      socketClosed.complete(null);
     }
+  }
+
+  /** Completes when the link is closed (its socket; its reader may still be ending). */
+  CompletableFuture<Void> whenClosed() {
+    return socketClosed;
   }
 
   @Override

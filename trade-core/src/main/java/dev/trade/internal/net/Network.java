@@ -18,13 +18,16 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.UUID;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
+import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Executors;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicInteger;
 
 /**
@@ -66,6 +69,8 @@ public final class Network implements AutoCloseable {
    */
   private final Set<Link> live = ConcurrentHashMap.newKeySet();
   private final Map<InetSocketAddress, UUID> dialled = new ConcurrentHashMap<>();
+  /** How long close() lets the goodbyes, and what was queued before them, be written. */
+  static final long CLOSE_GRACE_MS = 2000;
   private volatile boolean closed;
 
   /**
@@ -320,15 +325,22 @@ public final class Network implements AutoCloseable {
     });
   }
 
-  /** Says goodbye to every neighbour, closes all links and stops all threads. */
+  /**
+   * Says goodbye to every neighbour, closes all links and stops all threads. Returns once every
+   * link is closed, within {@link #CLOSE_GRACE_MS}: a link whose goodbye cannot be written by then
+   * (a neighbour that does not read) is closed without it, which also ends a write stalled on it.
+   */
   @Override
   public void close() {
     if (closed) {
       return;
     }
     closed = true;
+    long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(CLOSE_GRACE_MS);
     discovery.close();
     connector.close();
+    // Also while this thread is stuck writing a goodbye below.
+    timer.schedule(this::closeLinksNow, CLOSE_GRACE_MS, TimeUnit.MILLISECONDS);
     byte[] goodbye = Frames.finish(Frames.start(Wire.GOODBYE, 0));
     for (Link l : live) {
       try {
@@ -341,12 +353,24 @@ public final class Network implements AutoCloseable {
     calls.failAll("container " + name + " closed");
     readWatch.close();
     control.shutdown();
-    timer.shutdownNow();
     workers.shutdownNow();
     try {
-      control.awaitTermination(2, TimeUnit.SECONDS);
+      control.awaitTermination(Math.max(0, deadline - System.nanoTime()), TimeUnit.NANOSECONDS);
+      CompletableFuture.allOf(live.stream().map(Link::whenClosed).toArray(CompletableFuture[]::new))
+          .get(Math.max(0, deadline - System.nanoTime()), TimeUnit.NANOSECONDS);
     } catch (InterruptedException e) {
       Thread.currentThread().interrupt();
+    } catch (TimeoutException | ExecutionException e) {
+      // Closed below.
+    }
+    closeLinksNow();
+    timer.shutdownNow();
+  }
+
+  /** Closes every link still open after its goodbye had its time. */
+  private void closeLinksNow() {
+    for (Link l : live) {
+      l.close("container closed: the goodbye was not written within " + CLOSE_GRACE_MS + " ms");
     }
   }
 

@@ -1,13 +1,17 @@
 package dev.trade.internal.net;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trade.TRADEContainer;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.OutputStream;
 import java.net.InetSocketAddress;
 import java.time.Duration;
+import java.util.Arrays;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
@@ -64,5 +68,71 @@ class NotReadingPeerTest {
     } finally {
       pinger.shutdownNow();
     }
+  }
+
+  /**
+   * Closing a container whose neighbour has stopped reading: its goodbye, and whatever was being
+   * written, cannot go out, and FAILURETIMEOUT (long here) has not passed. close() still returns
+   * within its grace period, and lets go of the link: its socket, and the threads that were
+   * writing to it or reading it.
+   */
+  @Test
+  @Timeout(60)
+  void closeLetsGoOfALinkWhosePeerStopsReadingWithinItsGracePeriod() throws Exception {
+    TRADEContainer provider = TRADEContainer.builder().name("closing")
+        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
+        .property("HEARTBEATINTERVAL", "100").property("FAILURETIMEOUT", "30000").build();
+    String[] at = provider.getServerAddresses().get(0).split("@");
+    try (RawPeer sink = RawPeer.connect(new InetSocketAddress(at[0], Integer.parseInt(at[1])))) {
+      sink.handshake("stalled");
+      byte[] request = StateFrames.tableRequest(provider.getId());
+      ByteArrayOutputStream requests = new ByteArrayOutputStream();
+      for (int i = 0; i < 200_000; i++) {
+        requests.write(request);
+      }
+      sink.send(requests.toByteArray());
+      awaitStalledWrite(sink, "trade-control-closing");
+      long start = System.nanoTime();
+      provider.close();
+      Duration took = Duration.ofNanos(System.nanoTime() - start);
+      assertTrue(took.compareTo(Duration.ofSeconds(4)) < 0, "close() took " + took);
+      // The peer finds the connection gone when it next writes (reset), without reading.
+      OutputStream out = sink.socket.getOutputStream();
+      Deadline.await(Duration.ofSeconds(10), () -> {
+        try {
+          out.write(PING);
+          out.flush();
+          return false;
+        } catch (IOException gone) {
+          return true;
+        }
+      }, "the closed container's socket to the peer is closed");
+      Deadline.await(Duration.ofSeconds(10), () -> Thread.getAllStackTraces().keySet().stream()
+          .noneMatch(t -> t.getName().startsWith("trade-control-closing")
+              || t.getName().equals("trade-link-stalled")),
+          "the closed container's threads for the link have ended");
+    }
+  }
+
+  /**
+   * Waits until a thread whose name starts with {@code writer} is in a socket write while the
+   * bytes the peer has not read stay the same for a hundred checks in a row: the write is stalled.
+   */
+  private static void awaitStalledWrite(RawPeer peer, String writer) {
+    long[] unread = {-1, 0};
+    Deadline.await(Duration.ofSeconds(30), () -> {
+      long now;
+      try {
+        now = peer.socket.getInputStream().available();
+      } catch (IOException e) {
+        throw new AssertionError(e);
+      }
+      boolean writing = Thread.getAllStackTraces().entrySet().stream()
+          .anyMatch(e -> e.getKey().getName().startsWith(writer) && Arrays.stream(e.getValue())
+              .anyMatch(f -> f.getMethodName().equals("implWrite")));
+      unread[1] = writing && now > 0 && now == unread[0] ? unread[1] + 1 : 0;
+      unread[0] = now;
+      return unread[1] >= 100;
+    }, writer + "'s write stalled");
   }
 }
