@@ -15,11 +15,25 @@ final class Dispatch implements LinkHandler {
   private final RemoteCalls calls;
   private final Replication replication;
   private final Network network;
+  private final long backlogLimit;
 
-  Dispatch(RemoteCalls calls, Replication replication, Network network) {
+  /**
+   * @param backlogLimit how many bytes of one link's replication frames may wait for the control
+   *     thread (see {@link ControlBacklog}); a link that sends more is closed
+   */
+  Dispatch(RemoteCalls calls, Replication replication, Network network, long backlogLimit) {
     this.calls = calls;
     this.replication = replication;
     this.network = network;
+    this.backlogLimit = backlogLimit;
+  }
+
+  /**
+   * The backlog limit for links of a container with this MAXFRAMESIZE: two of the largest frames,
+   * and at least 16 MiB, which a system of a hundred containers starting at once stays far below.
+   */
+  static long backlogLimit(int maxFrameSize) {
+    return Math.max(2L * maxFrameSize, 16L << 20);
   }
 
   @Override
@@ -45,9 +59,18 @@ final class Dispatch implements LinkHandler {
       case Wire.DELTA:
         // Not stale: the link asked isStale first.
       case Wire.TABLE_REQUEST:
-      case Wire.DIGEST:
-        network.onControl(() -> replication.received(link, type, payload));
+      case Wire.DIGEST: {
+        long held = link.backlog.hold(payload.length, backlogLimit);
+        if (held < 0) {
+          throw new IOException("flooding: more than " + backlogLimit + " bytes of its replication"
+              + " frames wait to be applied here");
+        }
+        network.onControl(() -> {
+          link.backlog.release(held);
+          replication.received(link, type, payload);
+        });
         break;
+      }
       default:
         throw new IOException("unknown frame type " + type);
     }

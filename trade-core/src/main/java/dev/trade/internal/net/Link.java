@@ -41,6 +41,8 @@ final class Link {
   private final LinkInput input;
   private final LinkOutput output;
   private final AtomicBoolean closed = new AtomicBoolean();
+  /** This link's frames that wait for the control thread. */
+  final ControlBacklog backlog = new ControlBacklog();
   /** Completed when the socket is closed. */
   private final CompletableFuture<Void> socketClosed = new CompletableFuture<>();
   /** Why the link was closed, by whoever closed it first; null while it is open. */

@@ -103,7 +103,8 @@ public final class Network implements AutoCloseable {
             // Nothing left to refresh.
           }
         }, this::unreachable);
-    this.dispatch = new Dispatch(calls, replication, this);
+    this.dispatch = new Dispatch(calls, replication, this,
+        Dispatch.backlogLimit(settings.maxFrameSize()));
     if (settings.defaultCredentialsBeyondThisHost()) {
       LOG.log(Level.WARNING, "{0}: CREDENTIALS has its published default value, and this container"
           + " reaches beyond this host: anyone who can reach it can join the system. Give every"

@@ -71,6 +71,39 @@ class NotReadingPeerTest {
   }
 
   /**
+   * A member that sends replication frames faster than they can be applied, here table requests
+   * whose answers it never reads (so that the control thread, stalled on writing one, applies
+   * nothing), is cut off once its backlog passes the limit, long before FAILURETIMEOUT, rather than
+   * filling the container's memory. The limit is two of the largest frames, at least 16 MiB.
+   */
+  @Test
+  @Timeout(60)
+  void aMemberWhoseReplicationFramesPileUpUnappliedIsCutOff() throws Exception {
+    try (LogCapture log = new LogCapture();
+        TRADEContainer provider = TRADEContainer.builder().name("flooded")
+            .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
+            .property("MAXFRAMESIZE", "1024").property("FAILURETIMEOUT", "60000").build()) {
+      provider.registerAllServices(new Probe());
+      String[] at = provider.getServerAddresses().get(0).split("@");
+      try (RawPeer sink = RawPeer.connect(new InetSocketAddress(at[0], Integer.parseInt(at[1])))) {
+        sink.handshake("flooder");
+        byte[] request = StateFrames.tableRequest(provider.getId());
+        ByteArrayOutputStream requests = new ByteArrayOutputStream();
+        for (int i = 0; i < 300_000; i++) { // 300,000 x (45 + 128) bytes held: 52 MB
+          requests.write(request);
+        }
+        sink.send(requests.toByteArray());
+        Deadline.await(Duration.ofSeconds(30), () -> log.has(Level.INFO,
+            "flooded: link to flooder closed: connection to flooder lost: flooding: more than"
+            + " 16777216 bytes of its replication frames wait to be applied here"),
+            "the link closed for flooding, in:\n" + log.tail());
+      }
+      assertEquals(7, provider.getAvailableService(new TRADEServiceConstraints().name("probe"))
+          .call(Integer.class));
+    }
+  }
+
+  /**
    * Closing a container whose neighbour has stopped reading: its goodbye, and whatever was being
    * written, cannot go out, and FAILURETIMEOUT (long here) has not passed. close() still returns
    * within its grace period, and lets go of the link: its socket, and the threads that were
