@@ -52,12 +52,7 @@ class NotReadingPeerTest {
         pinger.scheduleAtFixedRate(() -> sink.send(PING), 0, 50, TimeUnit.MILLISECONDS);
         // Requests for the provider's table, whose answers come to far more than loopback's
         // socket buffers (a few MB each way) hold, and are never read.
-        byte[] request = StateFrames.tableRequest(provider.getId());
-        ByteArrayOutputStream requests = new ByteArrayOutputStream();
-        for (int i = 0; i < 200_000; i++) {
-          requests.write(request);
-        }
-        sink.send(requests.toByteArray());
+        sink.send(tableRequests(provider.getId(), 200_000));
         Deadline.await(Duration.ofSeconds(30), () -> log.has(Level.INFO,
             "provider: link to sink closed: not reading: a write has waited", "(FAILURETIMEOUT=1500)"),
             "the link closed for its stalled write, in:\n" + log.tail());
@@ -87,12 +82,8 @@ class NotReadingPeerTest {
       String[] at = provider.getServerAddresses().get(0).split("@");
       try (RawPeer sink = RawPeer.connect(new InetSocketAddress(at[0], Integer.parseInt(at[1])))) {
         sink.handshake("flooder");
-        byte[] request = StateFrames.tableRequest(provider.getId());
-        ByteArrayOutputStream requests = new ByteArrayOutputStream();
-        for (int i = 0; i < 300_000; i++) { // 300,000 x (45 + 128) bytes held: 52 MB
-          requests.write(request);
-        }
-        sink.send(requests.toByteArray());
+        // 300,000 x (45 + 128) bytes held: 52 MB
+        sink.send(tableRequests(provider.getId(), 300_000));
         Deadline.await(Duration.ofSeconds(30), () -> log.has(Level.INFO,
             "flooded: link to flooder closed: connection to flooder lost: flooding: more than"
             + " 16777216 bytes of its replication frames wait to be applied here"),
@@ -118,12 +109,7 @@ class NotReadingPeerTest {
     String[] at = provider.getServerAddresses().get(0).split("@");
     try (RawPeer sink = RawPeer.connect(new InetSocketAddress(at[0], Integer.parseInt(at[1])))) {
       sink.handshake("stalled");
-      byte[] request = StateFrames.tableRequest(provider.getId());
-      ByteArrayOutputStream requests = new ByteArrayOutputStream();
-      for (int i = 0; i < 200_000; i++) {
-        requests.write(request);
-      }
-      sink.send(requests.toByteArray());
+      sink.send(tableRequests(provider.getId(), 200_000));
       awaitStalledWrite(sink, "trade-control-closing");
       long start = System.nanoTime();
       provider.close();
@@ -145,6 +131,16 @@ class NotReadingPeerTest {
               || t.getName().equals("trade-link-stalled")),
           "the closed container's threads for the link have ended");
     }
+  }
+
+  /** {@code count} TABLE_REQUEST frames for the table of container {@code id}, back to back. */
+  private static byte[] tableRequests(String id, int count) {
+    byte[] request = StateFrames.tableRequest(id);
+    ByteArrayOutputStream requests = new ByteArrayOutputStream(count * request.length);
+    for (int i = 0; i < count; i++) {
+      requests.writeBytes(request);
+    }
+    return requests.toByteArray();
   }
 
   /**
