@@ -5,7 +5,6 @@ import java.io.IOException;
 import java.net.Socket;
 import java.util.UUID;
 import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.atomic.AtomicBoolean;
 
 /**
  * One authenticated connection to a neighbouring container.
@@ -40,11 +39,10 @@ final class Link {
   private final Socket socket;
   private final LinkInput input;
   private final LinkOutput output;
-  private final AtomicBoolean closed = new AtomicBoolean();
+  /** Completed by {@link #close}, first of all. */
+  private final CompletableFuture<Void> closed = new CompletableFuture<>();
   /** This link's frames that wait for the control thread. */
   final ControlBacklog backlog = new ControlBacklog();
-  /** Completed when the socket is closed. */
-  private final CompletableFuture<Void> socketClosed = new CompletableFuture<>();
   /** Why the link was closed, by whoever closed it first; null while it is open. */
   private volatile String closeReason;
   // Set when the link is to close once the queued frames are written.
@@ -207,7 +205,7 @@ final class Link {
     role.takenOver(); // a hand-off's new thread reads now, whoever read before
     String why = first == null ? null : handOut(first);
     while (why == null) {
-      if (input.buffered() == 0 && role.callerWaits() && !closed.get()) {
+      if (input.buffered() == 0 && role.callerWaits() && !closed.isDone()) {
         // A lone caller waits for its reply over this link: it reads the reply itself.
         if (!endBurst() || !role.lend()) {
           return; // another thread reads now, or reading ended
@@ -229,7 +227,7 @@ final class Link {
    */
   void readFor(CompletableFuture<?> reply, long until) {
     // A closed link brings no reply; the caller is failed from elsewhere (see LinkHandler#closed).
-    while (!reply.isDone() && !closed.get() && System.nanoTime() - until < 0) {
+    while (!reply.isDone() && !closed.isDone() && System.nanoTime() - until < 0) {
       if (role.tryTake()) {
         String why = readLent(reply, until);
         if (why == null) {
@@ -254,7 +252,7 @@ final class Link {
    */
   private String readLent(CompletableFuture<?> reply, long until) {
     try {
-      while (!closed.get()) {
+      while (!closed.isDone()) {
         if (input.fillWithoutBlocking()) {
           String why = readOne(true);
           if (why != null) {
@@ -285,7 +283,7 @@ final class Link {
   private String readOne(boolean lent) {
     LinkInput.Frame f;
     try {
-      if (closed.get()) {
+      if (closed.isDone()) {
         return "closed";
       }
       if (!input.holdsWholeFrame() && !endBurst()) {
@@ -356,7 +354,7 @@ final class Link {
 
   /** Whether the link is closed, or can no longer be written to: then it is about to close. */
   boolean isClosed() {
-    return closed.get() || writeFailure != null;
+    return closed.isDone() || writeFailure != null;
   }
 
   /** Closes the link once the frames already handed to {@link #send} are written. */
@@ -371,7 +369,7 @@ final class Link {
 
   /** Closes the socket (which also ends the reader thread); idempotent. */
   void close(String reason) {
-    if (closed.compareAndSet(false, true)) {
+    if (closed.complete(null)) {
       closeReason = reason;
       try {
         socket.close();
@@ -379,13 +377,12 @@ final class Link {
         // Closing is best effort; the reader notices either way.
       }
       role.closing(); // a thread that lent reading takes it back, and ends it
-      socketClosed.complete(null);
     }
   }
 
-  /** Completes when the link is closed (its socket; its reader may still be ending). */
+  /** Completes when the link is closed (its reader may still be ending). */
   CompletableFuture<Void> whenClosed() {
-    return socketClosed;
+    return closed.copy(); // completing the copy does not close the link
   }
 
   @Override
