@@ -4,12 +4,10 @@ line so that a step can wait for the line it expects (Node.expect) and, at the e
 lines no step expected (Node.unconsumed). Used by multihost_scenario.py; see docs/system-tests.md.
 """
 
-import ctypes
 import os
 import re
 import signal
 import subprocess
-import sys
 import threading
 import time
 
@@ -30,15 +28,11 @@ HEARTBEAT_MS = 1000
 STARTUP_S = 20          # JVM start, discovery, links, tables: normally about 1 s
 
 
-_prctl = ctypes.CDLL(None).prctl if sys.platform.startswith("linux") else None
-
-
-def die_with_parent():
-    """In a node's process before exec: SIGKILL it when this test dies, even by SIGKILL. (A node
-    also exits at the end of its input, but a node stopped by SIGSTOP reads nothing.) Only a
-    prepared foreign call happens here, between fork and exec."""
-    PR_SET_PDEATHSIG = 1
-    _prctl(PR_SET_PDEATHSIG, int(signal.SIGKILL), 0, 0, 0)
+# A node is killed when this test dies, even by SIGKILL (a node also exits at the end of its input,
+# but a node stopped by SIGSTOP reads nothing): setpriv sets the parent-death signal and execs the
+# rest, which keeps it. Not a preexec_fn: code between fork and exec is unsafe in a process with
+# threads, as this one has (a reader per node).
+DIE_WITH_PARENT = ["setpriv", "--pdeathsig", "KILL", "--"]
 
 
 class Line:
@@ -78,7 +72,7 @@ class Node:
         self.eof = False
         self.quit_at = None
         self.id = None
-        cmd = self.topology.exec_prefix(self.host) + [
+        cmd = DIE_WITH_PARENT + self.topology.exec_prefix(self.host) + [
             java_binary(), "-XX:TieredStopAtLevel=1", "-cp", CLASSPATH,
             "-Djava.util.logging.config.file=" + LOGGING, MAIN_CLASS,
             self.host,
@@ -94,8 +88,7 @@ class Node:
         err = open(self.err_path, "w")
         self.started = time.time()
         self.proc = subprocess.Popen(cmd, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=err,
-                                     text=True, bufsize=1, start_new_session=True,
-                                     preexec_fn=die_with_parent)
+                                     text=True, bufsize=1, start_new_session=True)
         err.close()
         proc, lines, out_path = self.proc, self.lines, self.out_path
         threading.Thread(target=self._read, args=(proc, lines, out_path), daemon=True).start()
