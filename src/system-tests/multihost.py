@@ -13,9 +13,8 @@ declared gone after FAILURETIMEOUT and rejoins when it wakes up. See docs/system
 Needs root, `ip netns` (iproute2), and `unshare`, `nsenter` and `setpriv` (util-linux). Where
 they are unavailable the test is skipped with the reason, unless CI=true, where that is a failure.
 Every packet stays inside the namespaces this test creates; nothing runs with subnet range outside
-them. The test runs in a
-private mount namespace of its own, so the namespaces' mounts never reach the rest of the machine
-and disappear with the test even if it is killed.
+them. The test runs in a private mount namespace of its own, so the namespaces' mounts never reach
+the rest of the machine and disappear with the test even if it is killed.
 
 The test is split into sibling modules, imported from this script's directory: multihost_net
 (availability, the namespaces and veth pairs), multihost_node (the container JVMs) and
