@@ -9,7 +9,6 @@ import dev.trade.TRADEServiceConstraints;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
-import java.net.InetSocketAddress;
 import java.time.Duration;
 import java.util.Arrays;
 import java.util.concurrent.Executors;
@@ -41,12 +40,10 @@ class NotReadingPeerTest {
   void aLinkWhosePeerStopsReadingIsClosedOnceAWriteHasWaitedForFailureTimeout() throws Exception {
     ScheduledExecutorService pinger = Executors.newSingleThreadScheduledExecutor();
     try (LogCapture log = new LogCapture();
-        TRADEContainer provider = TRADEContainer.builder().name("provider")
-            .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
+        TRADEContainer provider = accepting("provider")
             .property("HEARTBEATINTERVAL", "100").property("FAILURETIMEOUT", "1500").build()) {
       provider.registerAllServices(new Probe());
-      String[] at = provider.getServerAddresses().get(0).split("@");
-      try (RawPeer sink = RawPeer.connect(new InetSocketAddress(at[0], Integer.parseInt(at[1])))) {
+      try (RawPeer sink = RawPeer.connect(provider)) {
         sink.handshake("sink");
         // Alive by its heartbeats all along: only a stalled write can end the link.
         pinger.scheduleAtFixedRate(() -> sink.send(PING), 0, 50, TimeUnit.MILLISECONDS);
@@ -75,12 +72,10 @@ class NotReadingPeerTest {
   @Timeout(60)
   void aMemberWhoseReplicationFramesPileUpUnappliedIsCutOff() throws Exception {
     try (LogCapture log = new LogCapture();
-        TRADEContainer provider = TRADEContainer.builder().name("flooded")
-            .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
+        TRADEContainer provider = accepting("flooded")
             .property("MAXFRAMESIZE", "1024").property("FAILURETIMEOUT", "60000").build()) {
       provider.registerAllServices(new Probe());
-      String[] at = provider.getServerAddresses().get(0).split("@");
-      try (RawPeer sink = RawPeer.connect(new InetSocketAddress(at[0], Integer.parseInt(at[1])))) {
+      try (RawPeer sink = RawPeer.connect(provider)) {
         sink.handshake("flooder");
         // 300,000 x (45 + 128) bytes held: 52 MB
         sink.send(tableRequests(provider.getId(), 300_000));
@@ -103,11 +98,9 @@ class NotReadingPeerTest {
   @Test
   @Timeout(60)
   void closeLetsGoOfALinkWhosePeerStopsReadingWithinItsGracePeriod() throws Exception {
-    TRADEContainer provider = TRADEContainer.builder().name("closing")
-        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
+    TRADEContainer provider = accepting("closing")
         .property("HEARTBEATINTERVAL", "100").property("FAILURETIMEOUT", "30000").build();
-    String[] at = provider.getServerAddresses().get(0).split("@");
-    try (RawPeer sink = RawPeer.connect(new InetSocketAddress(at[0], Integer.parseInt(at[1])))) {
+    try (RawPeer sink = RawPeer.connect(provider)) {
       sink.handshake("stalled");
       sink.send(tableRequests(provider.getId(), 200_000));
       awaitStalledWrite(sink, "trade-control-closing");
@@ -131,6 +124,12 @@ class NotReadingPeerTest {
               || t.getName().equals("trade-link-stalled")),
           "the closed container's threads for the link have ended");
     }
+  }
+
+  /** A container that accepts connections on loopback; the test adds its other settings. */
+  private static TRADEContainer.Builder accepting(String name) {
+    return TRADEContainer.builder().name(name)
+        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0");
   }
 
   /** {@code count} TABLE_REQUEST frames for the table of container {@code id}, back to back. */

@@ -1,5 +1,6 @@
 package dev.trade.internal.net;
 
+import dev.trade.TRADEContainer;
 import java.io.DataInputStream;
 import java.io.EOFException;
 import java.io.IOException;
@@ -28,6 +29,12 @@ final class RawPeer implements AutoCloseable {
     this.socket = socket;
     this.in = socket.getInputStream();
     this.out = socket.getOutputStream();
+  }
+
+  /** Connects to the first address {@code container} listens on. */
+  static RawPeer connect(TRADEContainer container) throws IOException {
+    String[] at = container.getServerAddresses().get(0).split("@");
+    return connect(new InetSocketAddress(at[0], Integer.parseInt(at[1])));
   }
 
   static RawPeer connect(InetSocketAddress address) throws IOException {
