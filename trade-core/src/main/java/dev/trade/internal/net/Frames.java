@@ -35,6 +35,11 @@ final class Frames {
     return sink.size() == sink.array().length ? sink.array() : sink.toByteArray();
   }
 
+  /** Whether a complete frame (header included) keeps within {@code limit} (MAXFRAMESIZE). */
+  static boolean fits(byte[] frame, int limit) {
+    return frame.length - 4 <= limit;
+  }
+
   static void writeUuid(ByteSink out, UUID id) {
     out.writeLong(id.getMostSignificantBits());
     out.writeLong(id.getLeastSignificantBits());

@@ -40,23 +40,27 @@ final class Handshake {
   private static final int MAX_ADDRESSES = 16;
   private static final SecureRandom RANDOM = new SecureRandom();
 
-  /** Who we are, as told to peers. */
+  /**
+   * Who we are, as told to peers; {@code maxFrame} is our MAXFRAMESIZE, or 0 to leave it out of
+   * the HELLO (as senders before it was exchanged did).
+   */
   record Identity(String systemId, UUID containerId, String name, String host, List<String> addresses,
-      boolean encrypt, boolean digests) {
+      boolean encrypt, boolean digests, int maxFrame) {
     /** An identity that does not encrypt frames and exchanges full state when a link comes up. */
     Identity(String systemId, UUID containerId, String name, String host, List<String> addresses) {
-      this(systemId, containerId, name, host, addresses, false, false);
+      this(systemId, containerId, name, host, addresses, false, false, 0);
     }
   }
 
   /**
-   * Who the peer proved to be, the link's frame cipher when frames are encrypted (else null), and
-   * whether both sides said they exchange DIGEST when the link comes up.
+   * Who the peer proved to be, the link's frame cipher when frames are encrypted (else null),
+   * whether both sides said they exchange DIGEST when the link comes up, and the largest frame the
+   * peer said it accepts (its MAXFRAMESIZE; 0 if it did not say).
    */
   record Peer(UUID containerId, String name, String host, List<String> addresses, FrameCipher cipher,
-      boolean digests) {
+      boolean digests, int maxFrame) {
     Peer(UUID containerId, String name, String host, List<String> addresses, FrameCipher cipher) {
-      this(containerId, name, host, addresses, cipher, false);
+      this(containerId, name, host, addresses, cipher, false, 0);
     }
   }
 
@@ -67,6 +71,8 @@ final class Handshake {
   /** HELLO flag: this side encrypts frames after the handshake (USEENCRYPTION). */
   private static final int FLAG_ENCRYPT = 1;
   private static final int FLAG_DIGEST = 2;
+  /** HELLO flag: a u32 follows the flags, the largest frame this side accepts (MAXFRAMESIZE). */
+  private static final int FLAG_FRAME_LIMIT = 4;
 
   /** The handshake failed; {@code reason} is one of the {@code Wire.REFUSE_*} codes or 0 (I/O). */
   static final class Failure extends Exception {
@@ -146,8 +152,16 @@ final class Handshake {
       }
       hello.get(peerNonce);
       peerFlags = hello.get() & 0xff;
+      int peerMaxFrame = 0;
+      if ((peerFlags & FLAG_FRAME_LIMIT) != 0) {
+        peerMaxFrame = hello.getInt();
+        if (peerMaxFrame < Wire.MIN_FRAME_LIMIT) {
+          throw refuse(out, Wire.REFUSE_MALFORMED, "frame limit " + Integer.toUnsignedString(
+              peerMaxFrame) + " below " + Wire.MIN_FRAME_LIMIT);
+        }
+      }
       peer = new Peer(id, name, host, addresses, null,
-          self.digests() && (peerFlags & FLAG_DIGEST) != 0);
+          self.digests() && (peerFlags & FLAG_DIGEST) != 0, peerMaxFrame);
     } catch (RuntimeException e) { // BufferUnderflow, bad UTF-8 length...
       throw refuse(out, Wire.REFUSE_MALFORMED, "malformed HELLO: " + e);
     }
@@ -177,7 +191,8 @@ final class Handshake {
       return peer;
     }
     return new Peer(peer.containerId(), peer.name(), peer.host(), peer.addresses(),
-        new FrameCipher(key, self.containerId(), peer.containerId(), nonce, peerNonce), peer.digests());
+        new FrameCipher(key, self.containerId(), peer.containerId(), nonce, peerNonce), peer.digests(),
+        peer.maxFrame());
   }
 
   /** The HELLO payload with this nonce. */
@@ -197,7 +212,12 @@ final class Handshake {
       writeString(out, a);
     }
     out.write(nonce);
-    out.writeByte((self.encrypt() ? FLAG_ENCRYPT : 0) | (self.digests() ? FLAG_DIGEST : 0));
+    boolean limit = self.maxFrame() > 0;
+    out.writeByte((self.encrypt() ? FLAG_ENCRYPT : 0) | (self.digests() ? FLAG_DIGEST : 0)
+        | (limit ? FLAG_FRAME_LIMIT : 0));
+    if (limit) {
+      out.writeInt(self.maxFrame());
+    }
     return bytes.toByteArray();
   }
 

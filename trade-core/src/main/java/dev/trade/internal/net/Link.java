@@ -36,6 +36,11 @@ final class Link {
   final boolean initiatedHere;
   /** Whether both sides exchange DIGEST, not their full state, when the link comes up. */
   final boolean digests;
+  /**
+   * The largest frame (after its length field) sent over this link: our MAXFRAMESIZE, or the
+   * peer's if it said in its HELLO that it accepts less. A larger frame would close the link.
+   */
+  final int sendLimit;
   private final Socket socket;
   private final LinkInput input;
   private final LinkOutput output;
@@ -73,6 +78,7 @@ final class Link {
     this.peerName = peer.name();
     this.initiatedHere = initiatedHere;
     this.digests = peer.digests();
+    this.sendLimit = peer.maxFrame() > 0 ? Math.min(maxFrame, peer.maxFrame()) : maxFrame;
     FrameCipher cipher = peer.cipher();
     // Small buffers: a container keeps one link per neighbour, and with 100 containers on a host
     // 2 x 64 KB per link was 12.7 MB of heap per container. Frames larger than a buffer bypass it

@@ -111,7 +111,8 @@ public final class Network implements AutoCloseable {
           + " container of the system the same CREDENTIALS of its own (docs/security.md).", name);
     }
     Handshake handshake = new Handshake(new Handshake.Identity(settings.tradeSysId(), self, name,
-        host, List.of(), settings.useEncryption(), true), settings.credentials());
+        host, List.of(), settings.useEncryption(), true, settings.maxFrameSize()),
+        settings.credentials());
     this.connector = new Connector(name, handshake, (int) settings.clientSocketTimeout().toMillis(),
         workers, timer, new Connector.Sink() {
           @Override

@@ -112,10 +112,10 @@ final class RemoteCalls {
     long remaining = deadlineNanos - sent;
     byte[] frame = callFrame(destination, id, d.serviceId(),
         (int) Math.min(Integer.MAX_VALUE, Math.max(1, TimeUnit.NANOSECONDS.toMillis(remaining))), args);
-    if (!fits(frame)) {
+    if (!Frames.fits(frame, link.sendLimit)) {
       // Each value fits its limit, but not the call as a whole; the peer would drop the link.
       throw new TRADESerializationException("Cannot call " + d.signature() + ": its arguments need "
-          + (frame.length - 4) + " bytes, more than MAXFRAMESIZE=" + maxFrame);
+          + (frame.length - 4) + " bytes, more than " + Replies.limitOf(link, maxFrame));
     }
     Pending p = new Pending(new CompletableFuture<>(), destination, link.peerId, deadlineNanos, d,
         remaining);
@@ -246,8 +246,15 @@ final class RemoteCalls {
       }
       return;
     }
+    byte[] frame = Frames.forwarded(type, payload);
+    if (!Frames.fits(frame, next.sendLimit)) {
+      replies.reply(from, payload, Wire.FAILED_SERIALIZATION, "Cannot pass the call on from "
+          + self + ": it needs " + (frame.length - 4) + " bytes, more than "
+          + Replies.limitOf(next, maxFrame));
+      return;
+    }
     try {
-      next.send(Frames.forwarded(type, payload));
+      next.send(frame);
     } catch (IOException e) {
       if (type == Wire.CALL) {
         replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer:"
@@ -332,9 +339,9 @@ final class RemoteCalls {
     }
   }
 
-  /** Whether a finished frame is within the frame size that peers accept. */
+  /** Whether a finished frame is within this container's own MAXFRAMESIZE. */
   private boolean fits(byte[] frame) {
-    return frame.length - 4 <= maxFrame;
+    return Frames.fits(frame, maxFrame);
   }
 
   /** Fails at once every call waiting on {@code container} (it left or became unreachable). */

@@ -4,6 +4,7 @@ import dev.trade.internal.codec.ByteSink;
 import java.io.IOException;
 import java.lang.System.Logger;
 import java.lang.System.Logger.Level;
+import java.util.Arrays;
 import java.util.UUID;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
@@ -45,17 +46,44 @@ final class Replies {
   /** A reply carrying only a text, shortened to what callers read (MAX_TEXT bytes of UTF-8). */
   void reply(Link from, byte[] call, int status, String text) {
     ByteSink out = replyStart(call, status);
-    out.writeText(clip(text == null ? "" : text));
+    out.writeText(clip(text == null ? "" : text, from == null ? maxFrame : from.sendLimit));
     sendReply(from, call, Frames.finish(out));
   }
 
   /**
-   * Cuts a reply text to what the caller reads ({@code MAX_TEXT} bytes) and a frame holds: a char
-   * takes at most 3 bytes of UTF-8.
+   * Cuts a reply text to what the caller reads ({@code MAX_TEXT} bytes) and a frame of at most
+   * {@code limit} bytes holds: a char takes at most 3 bytes of UTF-8.
    */
-  private String clip(String text) {
-    int maxChars = Math.min(RemoteCalls.MAX_TEXT, maxFrame - 64) / 3;
+  private static String clip(String text, int limit) {
+    int maxChars = Math.min(RemoteCalls.MAX_TEXT, limit - 64) / 3;
     return text.length() <= maxChars ? text : text.substring(0, maxChars);
+  }
+
+  /**
+   * What limits frames over {@code link}, for error texts: this container's MAXFRAMESIZE, or the
+   * smaller limit the peer declared.
+   */
+  static String limitOf(Link link, int ownLimit) {
+    return link.sendLimit < ownLimit
+        ? link.sendLimit + ", which container '" + link.peerName + "' accepts (its MAXFRAMESIZE)"
+        : "MAXFRAMESIZE=" + ownLimit;
+  }
+
+  /**
+   * Stands in for a reply too large for {@code link}, whose peer would close the link over it: a
+   * reply to the same call that says so, status 4 in place of a result and 6 in place of anything
+   * else, sent as a container that gives up forwarding sends its own.
+   */
+  private byte[] tooLarge(byte[] frame, Link link) {
+    byte[] head = Arrays.copyOfRange(frame, Wire.HEADER, Wire.HEADER + Frames.ROUTING + 9);
+    boolean result = head[Frames.ROUTING + 8] == Wire.OK;
+    ByteSink out = Frames.start(Wire.REPLY, 192);
+    Frames.writeRouting(out, self, Frames.destination(head), Wire.MAX_HOPS);
+    out.writeBytes(head, Frames.ROUTING, 8);
+    out.writeByte(result ? Wire.FAILED_SERIALIZATION : Wire.FAILED_OTHER);
+    out.writeText(clip("The " + (result ? "result" : "reply") + " cannot travel: it needs "
+        + (frame.length - 4) + " bytes, more than " + limitOf(link, maxFrame), link.sendLimit));
+    return Frames.finish(out);
   }
 
   /**
@@ -78,13 +106,16 @@ final class Replies {
     }
   }
 
-  /** Sends over {@code link} if it is there and open; false if not or if the write failed. */
-  private static boolean sent(Link link, byte[] frame) {
+  /**
+   * Sends over {@code link} if it is there and open; false if not or if the write failed. A frame
+   * too large for the link is replaced by one that says so (see {@link #tooLarge}).
+   */
+  private boolean sent(Link link, byte[] frame) {
     if (link == null || link.isClosed()) {
       return false;
     }
     try {
-      link.send(frame);
+      link.send(Frames.fits(frame, link.sendLimit) ? frame : tooLarge(frame, link));
       return true;
     } catch (IOException e) {
       return false;

@@ -9,6 +9,8 @@ final class Wire {
   static final int HEADER = 4 + 1 + 1;
   /** Frames a peer may send before it has authenticated are small and fixed-layout. */
   static final int MAX_HANDSHAKE_FRAME = 4096;
+  /** The smallest MAXFRAMESIZE a container may have, and may declare in its HELLO. */
+  static final int MIN_FRAME_LIMIT = 1024;
 
   // Before authentication.
   static final int HELLO = 1;

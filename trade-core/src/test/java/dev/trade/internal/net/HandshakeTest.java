@@ -1,14 +1,68 @@
 package dev.trade.internal.net;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trade.TRADEContainer;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
 import java.util.List;
 import java.util.UUID;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
 
+@Timeout(30)
 class HandshakeTest {
+
+  private static Handshake declaring(String name, int maxFrame) {
+    return new Handshake(new Handshake.Identity("diarc", UUID.randomUUID(), name, "localhost",
+        List.of(), false, true, maxFrame), "diarcUser");
+  }
+
+  /** Runs both handshakes over a loopback connection; the opening side's result first. */
+  private static Handshake.Peer[] shake(Handshake opening, Handshake accepting) throws Exception {
+    try (ServerSocket server = new ServerSocket(0, 1, InetAddress.getLoopbackAddress());
+        Socket out = new Socket(InetAddress.getLoopbackAddress(), server.getLocalPort());
+        Socket in = server.accept()) {
+      out.setSoTimeout(10_000);
+      in.setSoTimeout(10_000);
+      CompletableFuture<Handshake.Peer> accepted = CompletableFuture.supplyAsync(() -> {
+        try {
+          return accepting.run(in.getInputStream(), in.getOutputStream(), false);
+        } catch (Exception e) {
+          throw new IllegalStateException(e);
+        }
+      });
+      Handshake.Peer opened = opening.run(out.getInputStream(), out.getOutputStream(), true);
+      return new Handshake.Peer[] {opened, accepted.get(10, TimeUnit.SECONDS)};
+    }
+  }
+
+  @Test
+  void eachSideLearnsTheLargestFrameTheOtherAccepts() throws Exception {
+    Handshake.Peer[] peers = shake(declaring("big", 1 << 26), declaring("small", 65_536));
+    assertEquals(65_536, peers[0].maxFrame());
+    assertEquals(1 << 26, peers[1].maxFrame());
+  }
+
+  @Test
+  void aHelloWithoutAFrameLimitStillLinksAndLeavesTheLimitUnknown() throws Exception {
+    Handshake.Peer[] peers = shake(declaring("silent", 0), declaring("small", 65_536));
+    assertEquals(65_536, peers[0].maxFrame());
+    assertEquals(0, peers[1].maxFrame());
+  }
+
+  @Test
+  void aFrameLimitBelowTheSmallestAllowedIsRefusedAsMalformed() throws Exception {
+    Handshake.Failure failure = assertThrows(Handshake.Failure.class,
+        () -> shake(declaring("fine", 65_536), declaring("tiny", 512)));
+    assertEquals(Wire.REFUSE_MALFORMED, failure.reason);
+    assertTrue(failure.getMessage().contains("frame limit 512 below 1024"), failure.getMessage());
+  }
 
   @Test
   void fieldsLongerThanAHelloHoldsAreRefusedWhenTheContainerIsBuilt() {

@@ -35,7 +35,7 @@ class MalformedCallTest {
         s.connect(new InetSocketAddress(address[0], Integer.parseInt(address[1])), 2000);
         s.setSoTimeout(5000);
         Handshake.Peer peer = new Handshake(new Handshake.Identity("diarc", me, "tester", "h",
-            List.of(), false, false), "secret").run(s.getInputStream(), s.getOutputStream(), true);
+            List.of(), false, false, 0), "secret").run(s.getInputStream(), s.getOutputStream(), true);
         assertEquals(UUID.fromString(server.getId()), peer.containerId());
 
         ByteSink call = Frames.start(Wire.CALL, 64);

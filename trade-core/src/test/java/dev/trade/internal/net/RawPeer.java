@@ -62,7 +62,7 @@ final class RawPeer implements AutoCloseable {
   Handshake.Peer handshakeWithDigests(String name) throws IOException, Handshake.Failure {
     socket.setSoTimeout(5_000);
     Handshake h = new Handshake(
-        new Handshake.Identity("diarc", id, name, "localhost", List.of(), false, true), "diarcUser");
+        new Handshake.Identity("diarc", id, name, "localhost", List.of(), false, true, 0), "diarcUser");
     Handshake.Peer peer = h.run(in, out, true);
     socket.setSoTimeout(0);
     return peer;
