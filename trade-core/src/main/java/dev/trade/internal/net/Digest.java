@@ -4,7 +4,7 @@ import dev.trade.internal.codec.ByteSink;
 import dev.trade.internal.codec.ByteSource;
 import dev.trade.internal.codec.Codec;
 import dev.trade.internal.codec.MalformedValueException;
-import dev.trade.internal.registry.Registry;
+import dev.trade.internal.registry.Table;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.HashMap;
@@ -30,14 +30,13 @@ final class Digest {
   private Digest() {}
 
   /** The DIGEST frame: every owner of a link state or table, with the versions of both. */
-  static byte[] frame(Collection<Topology.LinkState> states, Registry.Table own,
-      List<Registry.Table> tables) {
+  static byte[] frame(Collection<Topology.LinkState> states, Table own, List<Table> tables) {
     Map<String, long[]> versions = new HashMap<>();
     for (Topology.LinkState s : states) {
       versions.computeIfAbsent(s.owner(), o -> new long[] {NONE, NONE})[0] = s.version();
     }
     versions.computeIfAbsent(own.containerId(), o -> new long[] {NONE, NONE})[1] = own.version();
-    for (Registry.Table t : tables) {
+    for (Table t : tables) {
       versions.computeIfAbsent(t.containerId(), o -> new long[] {NONE, NONE})[1] = t.version();
     }
     ByteSink out = Frames.start(Wire.DIGEST, 16 + 56 * versions.size());
@@ -58,7 +57,7 @@ final class Digest {
    * @throws MalformedValueException if the payload is malformed
    */
   static List<byte[]> answer(byte[] payload, Collection<Topology.LinkState> states,
-      Registry.Table own, List<Registry.Table> tables, Codec codec) throws MalformedValueException {
+      Table own, List<Table> tables, Codec codec) throws MalformedValueException {
     Map<String, long[]> theirs = read(payload);
     List<byte[]> frames = new ArrayList<>();
     for (Topology.LinkState s : states) {
@@ -69,7 +68,7 @@ final class Digest {
     if (own.version() > have(theirs, own.containerId())[1]) {
       frames.add(StateFrames.table(codec, own));
     }
-    for (Registry.Table t : tables) {
+    for (Table t : tables) {
       if (t.version() > have(theirs, t.containerId())[1]) {
         frames.add(StateFrames.table(codec, t));
       }

@@ -6,6 +6,7 @@ import dev.trade.internal.codec.Codec;
 import dev.trade.internal.registry.Entry;
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
+import dev.trade.internal.registry.Table;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.HashSet;
@@ -120,7 +121,7 @@ final class Replication {
       send(link, StateFrames.links(s));
     }
     send(link, StateFrames.table(tableCodec, registry.localTable()));
-    for (Registry.Table t : tables.known()) {
+    for (Table t : tables.known()) {
       send(link, StateFrames.table(tableCodec, t));
     }
   }
@@ -240,7 +241,7 @@ final class Replication {
           }
           List<ServiceDescriptor> services = StateFrames.descriptors(tableCodec.read(in, loader()));
           // Routes as computed last: a table whose owner is not routable yet is listed once it is.
-          if (!tables.table(new Registry.Table(owner, version, services), routing.route(owner),
+          if (!tables.table(new Table(owner, version, services), routing.route(owner),
               System.nanoTime())) {
             break;
           }
@@ -270,7 +271,7 @@ final class Replication {
           if (owner.equals(selfId)) {
             send(from, StateFrames.table(tableCodec, registry.localTable()));
           } else {
-            for (Registry.Table t : tables.known()) {
+            for (Table t : tables.known()) {
               if (t.containerId().equals(owner)) {
                 send(from, StateFrames.table(tableCodec, t));
               }

@@ -3,8 +3,8 @@ package dev.trade.internal.net;
 import dev.trade.TRADESerializationException;
 import dev.trade.internal.codec.ByteSink;
 import dev.trade.internal.codec.Codec;
-import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
+import dev.trade.internal.registry.Table;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
@@ -27,7 +27,7 @@ final class StateFrames {
     return Frames.finish(out);
   }
 
-  static byte[] table(Codec codec, Registry.Table t) {
+  static byte[] table(Codec codec, Table t) {
     ByteSink out = Frames.start(Wire.TABLE, 256);
     out.writeText(t.containerId());
     out.writeLong(t.version());

@@ -2,6 +2,7 @@ package dev.trade.internal.net;
 
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
+import dev.trade.internal.registry.Table;
 import java.lang.System.Logger;
 import java.lang.System.Logger.Level;
 import java.util.ArrayList;
@@ -27,7 +28,7 @@ import java.util.Map;
 final class Tables {
   private static final Logger LOG = System.getLogger("dev.trade.net");
 
-  private record Waiting(Registry.Table table, long since) {}
+  private record Waiting(Table table, long since) {}
 
   private final Registry registry;
   private final Map<String, Waiting> waiting = new HashMap<>();
@@ -50,7 +51,7 @@ final class Tables {
    *
    * @return whether it is new here, and to be passed on
    */
-  boolean table(Registry.Table table, Topology.Route route, long nowNanos) {
+  boolean table(Table table, Topology.Route route, long nowNanos) {
     if (route != null) {
       return registry.applyTables(List.of(table), Map.of(table.containerId(), route.distance()));
     }
@@ -77,14 +78,14 @@ final class Tables {
     for (ServiceDescriptor d : add) {
       services.put(d.serviceId(), d);
     }
-    waiting.put(owner, new Waiting(new Registry.Table(owner, version,
+    waiting.put(owner, new Waiting(new Table(owner, version,
         new ArrayList<>(services.values())), w.since()));
     return Registry.DeltaResult.APPLIED;
   }
 
   /** Every table of another container known here, listed or waiting (for digests and requests). */
-  List<Registry.Table> known() {
-    List<Registry.Table> result = registry.remoteTables();
+  List<Table> known() {
+    List<Table> result = registry.remoteTables();
     waiting.values().forEach(w -> result.add(w.table()));
     return result;
   }
@@ -99,16 +100,16 @@ final class Tables {
     for (String owner : registry.remoteContainers()) {
       if (!routes.containsKey(owner)) {
         LOG.log(Level.INFO, "container {0} left or is not reachable any more", owner);
-        Registry.Table t = registry.removeContainer(owner);
+        Table t = registry.removeContainer(owner);
         if (t != null) {
           waiting.put(owner, new Waiting(t, nowNanos)); // listed again if reachable again soon
         }
       }
     }
-    List<Registry.Table> listed = new ArrayList<>();
+    List<Table> listed = new ArrayList<>();
     Map<String, Integer> distances = new HashMap<>();
     for (Iterator<Waiting> it = waiting.values().iterator(); it.hasNext(); ) {
-      Registry.Table t = it.next().table();
+      Table t = it.next().table();
       Topology.Route r = routes.get(t.containerId());
       if (r != null) {
         it.remove();

@@ -329,13 +329,6 @@ public final class Registry {
     applyTables(tables, distances, changed);
   }
 
-  /** A container's table of services at a version. */
-  public record Table(String containerId, long version, List<ServiceDescriptor> services) {
-    public Table {
-      services = List.copyOf(services);
-    }
-  }
-
   /**
    * Runs {@code action} while no change can happen: listeners are told of changes under the same
    * lock, so an action that reads and subscribes misses nothing and sees nothing twice.

@@ -7,7 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trade.TRADEContainer;
 import dev.trade.TRADEService;
-import dev.trade.internal.registry.Registry;
+import dev.trade.internal.registry.Table;
 import java.net.InetSocketAddress;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -88,8 +88,8 @@ class DigestTest {
       assertTrue(versions[0] > 0 && versions[1] > 0, "a link and a service: " + Arrays.toString(versions));
       // We claim to have the provider's link state and table at the versions it has.
       p.send(Digest.frame(List.of(new Topology.LinkState(id, versions[0], Set.of(p.id.toString()))),
-          new Registry.Table(p.id.toString(), 0, List.of()),
-          List.of(new Registry.Table(id, versions[1], List.of()))));
+          new Table(p.id.toString(), 0, List.of()),
+          List.of(new Table(id, versions[1], List.of()))));
       assertEquals(List.of(), framesFor(p, Duration.ofMillis(1_000)));
     }
   }
@@ -99,7 +99,7 @@ class DigestTest {
     try (RawPeer p = RawPeer.connect(address)) {
       p.handshakeWithDigests("newcomer");
       digestOf(p);
-      p.send(Digest.frame(List.of(), new Registry.Table(p.id.toString(), 0, List.of()), List.of()));
+      p.send(Digest.frame(List.of(), new Table(p.id.toString(), 0, List.of()), List.of()));
       List<Integer> types = framesFor(p, Duration.ofMillis(1_000));
       assertEquals(List.of((int) Wire.LINKS, (int) Wire.TABLE), types, "its link state, then its table");
     }
@@ -117,7 +117,7 @@ class DigestTest {
     try (RawPeer p = RawPeer.connect(address)) {
       p.handshakeWithDigests("repeating");
       digestOf(p);
-      byte[] digest = Digest.frame(List.of(), new Registry.Table(p.id.toString(), 0, List.of()),
+      byte[] digest = Digest.frame(List.of(), new Table(p.id.toString(), 0, List.of()),
           List.of());
       p.send(digest);
       p.send(digest);
@@ -129,7 +129,7 @@ class DigestTest {
   void aDigestOnALinkWithoutDigestsClosesIt() throws Exception {
     try (RawPeer p = RawPeer.connect(address)) {
       assertFalse(p.handshake("older").digests());
-      p.send(Digest.frame(List.of(), new Registry.Table(p.id.toString(), 0, List.of()), List.of()));
+      p.send(Digest.frame(List.of(), new Table(p.id.toString(), 0, List.of()), List.of()));
       awaitClosedFor(p, "one on a link without digests");
     }
   }

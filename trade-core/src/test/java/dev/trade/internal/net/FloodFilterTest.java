@@ -8,6 +8,7 @@ import dev.trade.internal.codec.Codec;
 import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.codec.Limits;
 import dev.trade.internal.registry.Registry;
+import dev.trade.internal.registry.Table;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
@@ -93,7 +94,7 @@ class FloodFilterTest {
   }
 
   private byte[] table(String owner, long version) {
-    return payload(StateFrames.table(codec, new Registry.Table(owner, version, List.of())));
+    return payload(StateFrames.table(codec, new Table(owner, version, List.of())));
   }
 
   private byte[] delta(String owner, long version) {
@@ -106,7 +107,7 @@ class FloodFilterTest {
     assertTrue(stale(A, Wire.TABLE, table("x", 1)), "queued already, not applied yet");
     assertTrue(stale(A, Wire.DELTA, delta("x", 1)), "a table at its version is queued");
     assertFalse(stale(A, Wire.TABLE, table("x", 2)), "newer");
-    registry.applyTables(List.of(new Registry.Table("y", 3, List.of())), Map.of("y", 1));
+    registry.applyTables(List.of(new Table("y", 3, List.of())), Map.of("y", 1));
     assertTrue(stale(A, Wire.TABLE, table("y", 3)), "applied already");
     assertFalse(stale(A, Wire.LINKS, new byte[] {1}), "malformed: left to the control thread");
   }
@@ -123,7 +124,7 @@ class FloodFilterTest {
     assertFalse(stale(A, Wire.TABLE, table("x", 1)));
     filter.pruned(); // neither listed nor waiting: forgotten
     assertFalse(stale(A, Wire.TABLE, table("x", 1)));
-    tables.table(new Registry.Table("x", 1, List.of()), null, 0); // waits for a route
+    tables.table(new Table("x", 1, List.of()), null, 0); // waits for a route
     filter.pruned();
     assertTrue(stale(A, Wire.TABLE, table("x", 1)), "waiting for a route: kept");
   }

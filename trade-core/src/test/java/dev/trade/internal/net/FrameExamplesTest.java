@@ -14,6 +14,7 @@ import dev.trade.internal.codec.Limits;
 import dev.trade.internal.registry.LocalService;
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
+import dev.trade.internal.registry.Table;
 import java.io.ByteArrayOutputStream;
 import java.io.DataOutputStream;
 import java.io.IOException;
@@ -173,7 +174,7 @@ class FrameExamplesTest {
   void digestExample() throws Exception {
     assertDocumented("digest", Digest.frame(
         List.of(new Topology.LinkState(ARM.toString(), 1, Set.of(HUB.toString()))),
-        new Registry.Table(ARM.toString(), 1, List.of()), List.of()));
+        new Table(ARM.toString(), 1, List.of()), List.of()));
   }
 
   @Test

@@ -10,8 +10,8 @@ import dev.trade.internal.codec.ByteSource;
 import dev.trade.internal.codec.Codec;
 import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.codec.Limits;
-import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
+import dev.trade.internal.registry.Table;
 import java.net.InetSocketAddress;
 import java.time.Duration;
 import java.util.Arrays;
@@ -67,7 +67,7 @@ class UnroutableTableTest {
   }
 
   /** Asks for the far table and waits for the answer: every frame sent before it was handled. */
-  private Registry.Table askForFarTable() throws Exception {
+  private Table askForFarTable() throws Exception {
     peer.send(StateFrames.tableRequest(far));
     long deadline = System.nanoTime() + Duration.ofSeconds(5).toNanos();
     while (System.nanoTime() - deadline < 0) {
@@ -77,7 +77,7 @@ class UnroutableTableTest {
         String owner = in.readText(1024);
         long version = in.readLong();
         if (owner.equals(far)) {
-          return new Registry.Table(owner, version,
+          return new Table(owner, version,
               StateFrames.descriptors(tables.read(in, getClass().getClassLoader())));
         }
       }
@@ -92,7 +92,7 @@ class UnroutableTableTest {
 
   @Test
   void aTableBeforeItsRouteIsListedOnceTheRouteIsThere() throws Exception {
-    peer.send(StateFrames.table(tables, new Registry.Table(far, 1, List.of(service(1, "farProbe")))));
+    peer.send(StateFrames.table(tables, new Table(far, 1, List.of(service(1, "farProbe")))));
     peer.send(StateFrames.delta(tables, far, 2, List.of(service(2, "farGauge")), List.of()));
     assertEquals(2, askForFarTable().version(), "the table and its delta were kept");
     assertEquals(0, listed("farProbe"), "listed without a route to its container");
@@ -105,7 +105,7 @@ class UnroutableTableTest {
   @Test
   void aContainerCutOffForAMomentIsListedAgainWithoutItsTable() throws Exception {
     connectFar(2, 1);
-    peer.send(StateFrames.table(tables, new Registry.Table(far, 1, List.of(service(1, "farProbe")))));
+    peer.send(StateFrames.table(tables, new Table(far, 1, List.of(service(1, "farProbe")))));
     Deadline.await(Duration.ofSeconds(5), () -> listed("farProbe") == 1, "the far service");
     peer.send(StateFrames.links(new Topology.LinkState(me, 3, Set.of(provider.getId()))));
     Deadline.await(Duration.ofSeconds(5), () -> listed("farProbe") == 0, "the far service gone");

@@ -19,14 +19,14 @@ class RegistryTablesTest {
     registry.addListener((added, removed) -> calls.add(added));
   }
 
-  private static Registry.Table table(String owner, long version, String... services) {
+  private static Table table(String owner, long version, String... services) {
     List<ServiceDescriptor> list = new ArrayList<>();
     long id = 1;
     for (String name : services) {
       list.add(new ServiceDescriptor(owner, owner, "host", id++, name, List.of(), List.of(), "int",
           Set.of(), List.of()));
     }
-    return new Registry.Table(owner, version, list);
+    return new Table(owner, version, list);
   }
 
   private List<Entry> named(String name) {
