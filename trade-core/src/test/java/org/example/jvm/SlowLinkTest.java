@@ -6,16 +6,21 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import dev.trade.TRADEContainer;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
+import dev.trade.TRADEServiceInfo;
 import java.net.InetSocketAddress;
 import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Random;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import org.example.net.Await;
 import org.junit.jupiter.api.Test;
 
 /**
- * A frame that takes longer than {@code FAILURETIMEOUT} to arrive over a slow link is not silence:
- * its bytes keep arriving, so the receiver must not declare the sender gone in the middle of it.
+ * A slow link that carries everything in the end is not a dead one: neither side may declare the
+ * other gone while bytes keep going across, however long a frame or a queue of frames takes.
+ * Both sides here have {@code FAILURETIMEOUT=800}.
  */
 class SlowLinkTest {
   private static final Duration WAIT = Duration.ofSeconds(10);
@@ -28,30 +33,76 @@ class SlowLinkTest {
     }
   }
 
-  @Test
-  void largeArgumentSlowerThanTheFailureTimeoutArrives() throws Exception {
+  /** What a test does with the provider's {@code sha256}, seen from the far side of the link. */
+  private interface OverTheLink {
+    void run(TRADEServiceInfo sha256) throws Exception;
+  }
+
+  /**
+   * Runs {@code test} in a caller that reaches the provider through a proxy that passes
+   * {@code bytesPerSecond} towards the provider (replies unthrottled); returns its time in ms.
+   */
+  private static long overASlowLink(long bytesPerSecond, OverTheLink test) throws Exception {
     try (TRADEContainer provider = TRADEContainer.builder().name("far-provider")
         .property("HEARTBEATINTERVAL", "100").property("FAILURETIMEOUT", "800")
         .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build()) {
       provider.registerAllServices(new Digest());
       InetSocketAddress target = new InetSocketAddress("127.0.0.1",
           Integer.parseInt(provider.getServerAddresses().get(0).split("@")[1]));
-      // 3 MiB at 1 MiB/s: about three seconds on the wire, more than three failure timeouts.
-      try (ThrottlingProxy slowLink = new ThrottlingProxy(target, 1 << 20);
+      try (ThrottlingProxy slowLink = new ThrottlingProxy(target, bytesPerSecond);
           TRADEContainer caller = TRADEContainer.builder().name("far-caller")
               .property("HEARTBEATINTERVAL", "100").property("FAILURETIMEOUT", "800")
               .property("CONNECTCONTAINERS", slowLink.address()).build()) {
         TRADEServiceConstraints sha = new TRADEServiceConstraints().name("sha256");
         Await.until(WAIT, () -> !caller.getAvailableServices(sha).isEmpty(), "the sha256 service");
-        byte[] data = new byte[3 << 20];
-        new Random(7).nextBytes(data);
+        TRADEServiceInfo service = caller.getAvailableService(sha);
         long start = System.nanoTime();
-        byte[] digest = caller.getAvailableService(sha).call(byte[].class, (Object) data);
-        long ms = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
-        System.out.println("3 MiB over a 1 MiB/s link with FAILURETIMEOUT=800: " + ms + " ms");
-        assertArrayEquals(ConcurrentCallersTest.sha256(data), digest);
-        assertTrue(ms >= 2400, "the link was not slow: " + ms + " ms");
+        test.run(service);
+        return TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
       }
     }
+  }
+
+  /** The receiver must not declare the sender gone in the middle of a frame whose bytes keep coming. */
+  @Test
+  void largeArgumentSlowerThanTheFailureTimeoutArrives() throws Exception {
+    byte[] data = new byte[3 << 20];
+    new Random(7).nextBytes(data);
+    // 3 MiB at 1 MiB/s: about three seconds on the wire, more than three failure timeouts.
+    long ms = overASlowLink(1 << 20, sha256 ->
+        assertArrayEquals(ConcurrentCallersTest.sha256(data), sha256.call(byte[].class, (Object) data)));
+    System.out.println("3 MiB over a 1 MiB/s link with FAILURETIMEOUT=800: " + ms + " ms");
+    assertTrue(ms >= 2400, "the link was not slow: " + ms + " ms");
+  }
+
+  /**
+   * Calls queued faster than a slow link carries them are written one after the other: each write
+   * goes on, so none has waited FAILURETIMEOUT, however long the whole queue takes to drain. The
+   * sender must not close the link as "not reading" while the peer reads all along.
+   */
+  @Test
+  void aQueueThatTakesLongerThanTheFailureTimeoutToDrainIsNotAStalledWrite() throws Exception {
+    // 16 calls of 1 MiB at once over a 4 MiB/s link: each frame takes a quarter of a second, the
+    // queue of them (beyond what socket buffers hold) several FAILURETIMEOUTs.
+    long ms = overASlowLink(4 << 20, sha256 -> {
+      List<CompletableFuture<Boolean>> calls = new ArrayList<>();
+      for (int i = 0; i < 16; i++) {
+        byte[] data = new byte[1 << 20];
+        new Random(i).nextBytes(data);
+        calls.add(CompletableFuture.supplyAsync(() -> {
+          try {
+            return java.util.Arrays.equals(ConcurrentCallersTest.sha256(data),
+                sha256.call(byte[].class, (Object) data));
+          } catch (Exception e) {
+            throw new IllegalStateException(e);
+          }
+        }, runnable -> new Thread(runnable).start()));
+      }
+      for (CompletableFuture<Boolean> call : calls) {
+        assertTrue(call.get(60, TimeUnit.SECONDS));
+      }
+    });
+    System.out.println("16 x 1 MiB over a 4 MiB/s link with FAILURETIMEOUT=800: " + ms + " ms");
+    assertTrue(ms >= 3000, "the link was not slow: " + ms + " ms");
   }
 }

@@ -20,7 +20,8 @@ import java.util.concurrent.CompletableFuture;
  * <p>This class is safe for concurrent use.
  */
 final class Link {
-  private static final int BUFFER = 8 * 1024;
+  /** The size of a link's input and output buffers. */
+  static final int BUFFER = 8 * 1024;
 
   /**
    * What the read steps answer when reading went on in another thread; compared by identity, so
