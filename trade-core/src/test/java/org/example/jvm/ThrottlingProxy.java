@@ -9,6 +9,7 @@ import java.net.ServerSocket;
 import java.net.Socket;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.locks.LockSupport;
 
 /**
@@ -22,6 +23,8 @@ final class ThrottlingProxy implements AutoCloseable {
   private final long bytesPerSecond;
   private final ServerSocket server;
   private final List<Socket> sockets = new CopyOnWriteArrayList<>();
+  /** While set and not counted down, nothing passes towards the target. */
+  private volatile CountDownLatch paused;
 
   ThrottlingProxy(InetSocketAddress target, long bytesPerSecond) throws IOException {
     this.target = target;
@@ -42,20 +45,58 @@ final class ThrottlingProxy implements AutoCloseable {
         Socket upstream = new Socket(target.getAddress(), target.getPort());
         sockets.add(client);
         sockets.add(upstream);
-        start(() -> pump(client, upstream, bytesPerSecond), "proxy-up");
-        start(() -> pump(upstream, client, 0), "proxy-down");
+        start(() -> pump(client, upstream, bytesPerSecond, this::gate), "proxy-up");
+        start(() -> pump(upstream, client, 0, () -> { }), "proxy-down");
       }
     } catch (IOException e) {
       // Closed.
     }
   }
 
-  /** Copies {@code from} to {@code to}, at most {@code rate} bytes a second (0: unlimited). */
-  private static void pump(Socket from, Socket to, long rate) {
+  /** Stops passing bytes towards the target (the link's peer takes nothing) until {@link #resume}. */
+  void pause() {
+    paused = new CountDownLatch(1);
+  }
+
+  /** Whether {@link #pause} holds bytes back now. */
+  boolean isPaused() {
+    CountDownLatch p = paused;
+    return p != null && p.getCount() > 0;
+  }
+
+  void resume() {
+    CountDownLatch p = paused;
+    if (p != null) {
+      p.countDown();
+    }
+  }
+
+  /** Returns once bytes may pass towards the target. */
+  private void gate() {
+    CountDownLatch p = paused;
+    if (p != null) {
+      try {
+        p.await();
+      } catch (InterruptedException e) {
+        Thread.currentThread().interrupt();
+      }
+    }
+  }
+
+  /**
+   * Copies {@code from} to {@code to}, at most {@code rate} bytes a second (0: unlimited), each
+   * chunk once {@code gate} returns.
+   */
+  private static void pump(Socket from, Socket to, long rate, Runnable gate) {
     byte[] buffer = new byte[CHUNK];
     long due = System.nanoTime();
     try (InputStream in = from.getInputStream(); OutputStream out = to.getOutputStream()) {
-      for (int n = in.read(buffer); n >= 0; n = in.read(buffer)) {
+      while (true) {
+        gate.run();
+        int n = in.read(buffer);
+        if (n < 0) {
+          break;
+        }
         out.write(buffer, 0, n);
         out.flush();
         if (rate > 0) {
@@ -77,6 +118,7 @@ final class ThrottlingProxy implements AutoCloseable {
 
   @Override
   public void close() {
+    resume();
     try {
       server.close();
     } catch (IOException ignored) {

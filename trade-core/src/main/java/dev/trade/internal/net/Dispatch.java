@@ -44,11 +44,7 @@ final class Dispatch implements LinkHandler {
         if (payload.length < Frames.ROUTING + 8) {
           throw new IOException("short frame of type " + type);
         }
-        if (type == Wire.CALL) {
-          return calls.onCall(link, payload);
-        }
-        calls.onReply(payload);
-        break;
+        return type == Wire.CALL ? calls.onCall(link, payload) : calls.onReply(link, payload);
       case Wire.PING:
         break;
       case Wire.GOODBYE:

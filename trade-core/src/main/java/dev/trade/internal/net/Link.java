@@ -44,7 +44,8 @@ final class Link {
   final int sendLimit;
   private final Socket socket;
   private final LinkInput input;
-  private final LinkOutput output;
+  /** What is sent over the link; callers look at its room before they queue a call. */
+  final LinkOutput output;
   /** Completed by {@link #close}, first of all. */
   private final CompletableFuture<Void> closed = new CompletableFuture<>();
   /** This link's frames that wait for the control thread. */
@@ -384,6 +385,7 @@ final class Link {
         // Closing is best effort; the reader notices either way.
       }
       role.closing(); // a thread that lent reading takes it back, and ends it
+      output.wakeRoomWaiters(); // their calls fail at once, not at their deadlines
     }
   }
 

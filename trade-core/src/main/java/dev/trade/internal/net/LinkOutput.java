@@ -4,7 +4,10 @@ import java.io.IOException;
 import java.io.OutputStream;
 import java.util.Queue;
 import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.BooleanSupplier;
 
 /**
  * A link's writing. A sender that finds the socket idle writes its frame itself (no thread
@@ -30,7 +33,19 @@ final class LinkOutput {
    */
   static final int PIECE = 1024 * 1024;
 
+  /**
+   * Frames of this many bytes queued and not yet written make new calls wait ({@link #awaitRoom}):
+   * a peer that takes them slower than they are sent must not make the queue grow without bound.
+   */
+  static final long ROOM = 16 << 20;
+
   private final Queue<byte[]> queue = new ConcurrentLinkedQueue<>();
+  /** Bytes of the frames offered and not yet handed to the stream (taken off in batches). */
+  private final AtomicLong queued = new AtomicLong();
+  private final long room;
+  /** Senders in {@link #awaitRoom}, waiting on this. */
+  private final Object roomLock = new Object();
+  private volatile int roomWaiters;
   private final AtomicBoolean writing = new AtomicBoolean();
   /** Whether the reader hands out frames read together with more; see leftForBurst. */
   private volatile boolean burst;
@@ -51,14 +66,75 @@ final class LinkOutput {
    * @param written runs after each flush
    */
   LinkOutput(OutputStream out, FrameCipher cipher, Runnable written) {
+    this(out, cipher, written, ROOM);
+  }
+
+  /** @param room bytes queued and not yet written from which on new calls wait ({@link #ROOM}) */
+  LinkOutput(OutputStream out, FrameCipher cipher, Runnable written, long room) {
     this.out = out;
     this.cipher = cipher;
     this.written = written;
+    this.room = room;
   }
 
   /** Queues a complete frame (header included) for the next {@link #write}. */
   void offer(byte[] frame) {
+    queued.addAndGet(frame.length);
     queue.offer(frame);
+  }
+
+  /** Whether the frames waiting to be written come to less than the room: a call may queue. */
+  boolean hasRoom() {
+    return queued.get() < room;
+  }
+
+  /** Bytes of the frames queued and not yet written (approximately: taken off in batches). */
+  long queuedBytes() {
+    return queued.get();
+  }
+
+  /**
+   * Waits until there is room ({@link #hasRoom}), the link is {@code closed}, or {@code deadline}
+   * ({@link System#nanoTime}) passes.
+   *
+   * @return false if the deadline passed first
+   */
+  boolean awaitRoom(long deadline, BooleanSupplier closed) throws InterruptedException {
+    synchronized (roomLock) {
+      roomWaiters++; // before looking at the queue again: see wakeRoomWaiters
+      try {
+        while (!hasRoom() && !closed.getAsBoolean()) {
+          long left = deadline - System.nanoTime();
+          if (left <= 0) {
+            return false;
+          }
+          TimeUnit.NANOSECONDS.timedWait(roomLock, left);
+        }
+        return true;
+      } finally {
+        roomWaiters--;
+      }
+    }
+  }
+
+  /**
+   * Wakes the senders waiting for room: there is some now, or the link closed. A waiter counts
+   * itself before it looks at the queue, so one that missed this call saw the room it was for.
+   */
+  void wakeRoomWaiters() {
+    if (roomWaiters > 0) {
+      synchronized (roomLock) {
+        roomLock.notifyAll();
+      }
+    }
+  }
+
+  /** Writing went on: notes when, and takes {@code done} bytes written off the queued ones. */
+  private void progressed(long done) {
+    writingSince = System.nanoTime() | 1;
+    if (done != 0 && queued.addAndGet(-done) < room) {
+      wakeRoomWaiters();
+    }
   }
 
   /**
@@ -104,6 +180,7 @@ final class LinkOutput {
       writingSince = System.nanoTime() | 1;
       try {
         int untimed = 0; // bytes handed to the stream since writingSince was taken
+        long done = 0; // bytes of whole frames handed to the stream, still counted as queued
         byte[] next;
         while ((next = queue.poll()) != null) {
           // Sealing here, in write order, keeps the cipher's frame counter in step with the wire.
@@ -112,7 +189,8 @@ final class LinkOutput {
             if (untimed >= Link.BUFFER) {
               // What went before left (or waits in the buffer), and this thread moves on: not
               // stalled. Not for every small frame: one clock read per buffer's worth will do.
-              writingSince = System.nanoTime() | 1;
+              progressed(done);
+              done = 0;
               untimed = 0;
             }
             int n = Math.min(PIECE, bytes.length - at);
@@ -120,14 +198,17 @@ final class LinkOutput {
             at += n;
             untimed += n;
           }
+          done += next.length;
         }
         if (untimed > 0) {
-          writingSince = System.nanoTime() | 1;
+          progressed(done);
         }
         out.flush();
         written.run();
       } catch (IOException e) {
         queue.clear();
+        queued.set(0);
+        wakeRoomWaiters();
         throw e;
       } finally {
         writingSince = 0;

@@ -117,6 +117,9 @@ final class RemoteCalls {
       throw new TRADESerializationException("Cannot call " + d.signature() + ": its arguments need "
           + (frame.length - 4) + " bytes, more than " + Replies.limitOf(link, maxFrame));
     }
+    if (!link.output.hasRoom()) {
+      awaitRoom(link, d, deadlineNanos, remaining);
+    }
     Pending p = new Pending(new CompletableFuture<>(), destination, link.peerId, deadlineNanos, d,
         remaining);
     pending.put(id, p);
@@ -152,6 +155,27 @@ final class RemoteCalls {
       throw new TRADEException("Interrupted while waiting for " + d.signature());
     }
     return decodeReply(d, reply, loader);
+  }
+
+  /**
+   * Waits while the link holds {@link LinkOutput#ROOM} bytes or more not yet written: its peer
+   * takes them slower than calls are made, and the caller waits for it rather than the queue
+   * growing without bound; until the call's deadline.
+   */
+  private static void awaitRoom(Link link, ServiceDescriptor d, long deadline, long timeout)
+      throws TRADEException {
+    try {
+      if (!link.output.awaitRoom(deadline, link::isClosed)) {
+        throw new TRADETimeoutException("Service " + d.signature() + " of container "
+            + d.containerName() + " did not answer within " + TimeUnit.NANOSECONDS.toMillis(timeout)
+            + " ms: the call waited all that time to be sent, behind "
+            + link.output.queuedBytes() + " bytes that " + link.peerName
+            + " takes slower than they are sent");
+      }
+    } catch (InterruptedException e) {
+      Thread.currentThread().interrupt();
+      throw new TRADEException("Interrupted while waiting to send a call to " + d.signature());
+    }
   }
 
   /** A CALL frame (header included) for a service of {@code destination}. */
@@ -204,8 +228,9 @@ final class RemoteCalls {
   boolean onCall(Link from, byte[] payload) {
     UUID destination = Frames.destination(payload);
     if (!destination.equals(self)) {
-      forward(from, Wire.CALL, payload, destination);
-      return true;
+      // Passing a frame on writes to another link, which can block (its peer slow or not
+      // reading): like a call served here, the link it came over is read elsewhere meanwhile.
+      return from.serveHere(() -> forward(from, Wire.CALL, payload, destination));
     }
     if (from.servedElsewhere() >= MAX_SERVED_PER_LINK) {
       replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, "Service not available now: container "
@@ -215,18 +240,22 @@ final class RemoteCalls {
     return from.serveHere(() -> serve(from, payload));
   }
 
-  /** A REPLY frame arrived (reader thread). */
-  void onReply(byte[] payload) {
+  /**
+   * A REPLY frame arrived over {@code from} (its reading thread).
+   *
+   * @return true if this thread still reads {@code from}
+   */
+  boolean onReply(Link from, byte[] payload) {
     UUID destination = Frames.destination(payload);
     if (!destination.equals(self)) {
-      forward(null, Wire.REPLY, payload, destination);
-      return;
+      return from.serveHere(() -> forward(null, Wire.REPLY, payload, destination)); // see onCall
     }
     long id = Frames.requestId(payload);
     Pending p = pending.remove(id);
     if (p != null) {
       p.reply.complete(payload);
     }
+    return true;
   }
 
   /** @param from the link a CALL came in on (for its failure reply); null for a REPLY */
@@ -247,6 +276,13 @@ final class RemoteCalls {
       return;
     }
     byte[] frame = Frames.forwarded(type, payload);
+    if (!next.output.hasRoom()) {
+      // A reading thread must not wait for room: it would stop reading the link the call came on.
+      replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, "Service not available now: the link"
+          + " from " + self + " to " + next.peerName + " holds " + next.output.queuedBytes()
+          + " bytes that it takes slower than they are sent");
+      return;
+    }
     if (!Frames.fits(frame, next.sendLimit)) {
       replies.reply(from, payload, Wire.FAILED_SERIALIZATION, "Cannot pass the call on from "
           + self + ": it needs " + (frame.length - 4) + " bytes, more than "

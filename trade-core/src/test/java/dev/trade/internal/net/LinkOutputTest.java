@@ -3,11 +3,18 @@ package dev.trade.internal.net;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.IOException;
 import java.io.OutputStream;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
 
+@Timeout(30)
 class LinkOutputTest {
   /** Records each write's length and when, by the output's own clock, its writer last moved on. */
   private static final class Recording extends OutputStream {
@@ -58,5 +65,95 @@ class LinkOutputTest {
     assertEquals(frames, socket.lengths.size());
     long distinct = socket.stamps.stream().distinct().count();
     assertTrue(distinct >= 4 && distinct <= 5, distinct + " distinct times");
+  }
+
+  /** A socket whose peer takes nothing until {@link #release}. */
+  private static final class Stalled extends OutputStream {
+    final CountDownLatch writing = new CountDownLatch(1);
+    final CountDownLatch released = new CountDownLatch(1);
+
+    @Override
+    public void write(int b) throws IOException {
+      write(new byte[] {(byte) b}, 0, 1);
+    }
+
+    @Override
+    public void write(byte[] b, int off, int len) throws IOException {
+      writing.countDown();
+      try {
+        released.await();
+      } catch (InterruptedException e) {
+        throw new IOException(e);
+      }
+    }
+
+    void release() {
+      released.countDown();
+    }
+  }
+
+  @Test
+  void sendersWaitForRoomWhileThePeerTakesNothingAndGoOnOnceItDoes() throws Exception {
+    Stalled socket = new Stalled();
+    LinkOutput output = new LinkOutput(socket, null, () -> { }, 1000);
+    output.offer(new byte[600]);
+    CompletableFuture<Void> writer = CompletableFuture.runAsync(() -> {
+      try {
+        output.write();
+      } catch (IOException e) {
+        throw new IllegalStateException(e);
+      }
+    });
+    socket.writing.await();
+    assertTrue(output.hasRoom(), "600 of 1000 bytes");
+    output.offer(new byte[600]); // queued behind the stalled write: no room now
+    assertEquals(1200, output.queuedBytes());
+    assertTrue(!output.hasRoom());
+    long soon = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(50);
+    assertTrue(!output.awaitRoom(soon, () -> false), "the deadline passes first");
+
+    CompletableFuture<Boolean> waiting = CompletableFuture.supplyAsync(() -> {
+      try {
+        return output.awaitRoom(System.nanoTime() + TimeUnit.SECONDS.toNanos(20), () -> false);
+      } catch (InterruptedException e) {
+        throw new IllegalStateException(e);
+      }
+    });
+    socket.release();
+    assertTrue(waiting.get(10, TimeUnit.SECONDS), "room once the peer takes the frames");
+    writer.get(10, TimeUnit.SECONDS);
+    assertEquals(0, output.queuedBytes());
+  }
+
+  @Test
+  void aLinkThatClosesWakesTheSendersWaitingForRoom() throws Exception {
+    Stalled socket = new Stalled();
+    LinkOutput output = new LinkOutput(socket, null, () -> { }, 100);
+    output.offer(new byte[600]);
+    CompletableFuture.runAsync(() -> {
+      try {
+        output.write();
+      } catch (IOException e) {
+        // the test ends the write
+      }
+    });
+    socket.writing.await();
+    AtomicBoolean closed = new AtomicBoolean();
+    CompletableFuture<Boolean> waiting = new CompletableFuture<>();
+    Thread sender = new Thread(() -> {
+      try {
+        waiting.complete(output.awaitRoom(System.nanoTime() + TimeUnit.SECONDS.toNanos(20),
+            closed::get));
+      } catch (InterruptedException e) {
+        waiting.completeExceptionally(e);
+      }
+    });
+    sender.start();
+    Deadline.await(java.time.Duration.ofSeconds(10),
+        () -> sender.getState() == Thread.State.TIMED_WAITING, "the sender waiting for room");
+    closed.set(true);
+    output.wakeRoomWaiters(); // as Link.close does
+    assertTrue(waiting.get(5, TimeUnit.SECONDS), "it goes on (to find the link closed) at once");
+    socket.release();
   }
 }
