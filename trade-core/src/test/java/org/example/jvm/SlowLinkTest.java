@@ -105,4 +105,43 @@ class SlowLinkTest {
     System.out.println("16 x 1 MiB over a 4 MiB/s link with FAILURETIMEOUT=800: " + ms + " ms");
     assertTrue(ms >= 3000, "the link was not slow: " + ms + " ms");
   }
+
+  /**
+   * A caller whose thread happens to write for everyone (it found the link idle) stops writing for
+   * the others in time: while other callers keep a slow link busy, no call may outlast its deadline
+   * by more than a moment, the writing one's included.
+   */
+  @Test
+  void noCallerIsHeldWritingForOthersPastItsDeadline() throws Exception {
+    long timeoutMs = 1500;
+    List<Long> durations = java.util.Collections.synchronizedList(new ArrayList<>());
+    overASlowLink(2 << 20, sha256 -> {
+      TRADEServiceInfo timed = sha256.withTimeout(Duration.ofMillis(timeoutMs));
+      long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(4);
+      List<Thread> callers = new ArrayList<>();
+      for (int t = 0; t < 8; t++) {
+        Thread caller = new Thread(() -> {
+          byte[] data = new byte[1 << 20];
+          while (System.nanoTime() < until) {
+            long start = System.nanoTime();
+            try {
+              timed.call(byte[].class, (Object) data);
+            } catch (Exception e) {
+              // Timeouts are expected on a link this busy; how long each call took is the point.
+            }
+            durations.add(TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start));
+          }
+        });
+        caller.start();
+        callers.add(caller);
+      }
+      for (Thread caller : callers) {
+        caller.join(60_000);
+      }
+    });
+    long longest = durations.stream().mapToLong(Long::longValue).max().orElse(0);
+    System.out.println(durations.size() + " calls of 1 MiB over a 2 MiB/s link, timeout "
+        + timeoutMs + " ms: the longest took " + longest + " ms");
+    assertTrue(longest < timeoutMs + 1500, "a call took " + longest + " ms");
+  }
 }

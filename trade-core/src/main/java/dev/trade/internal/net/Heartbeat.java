@@ -78,7 +78,7 @@ final class Heartbeat {
     lastBeat = now;
     List<Link> idle = null;
     for (Link l : links) {
-      long writing = l.writingSince();
+      long writing = l.output.writingSince();
       if (writing != 0 && now - Math.max(writing, resumed) >= silence) {
         l.close("not reading: a write has waited " + TimeUnit.NANOSECONDS.toMillis(now - writing)
             + " ms (FAILURETIMEOUT=" + TimeUnit.NANOSECONDS.toMillis(silence) + ")");

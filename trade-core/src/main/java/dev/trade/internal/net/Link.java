@@ -20,7 +20,12 @@ import java.util.concurrent.CompletableFuture;
  * <p>This class is safe for concurrent use.
  */
 final class Link {
-  /** The size of a link's input and output buffers. */
+  /**
+   * The size of a link's input and output buffers. Small: a container keeps one link per
+   * neighbour, and with 100 containers on a host 2 x 64 KB per link was 12.7 MB of heap per
+   * container. Frames larger than a buffer bypass it, and 8 KB still coalesces about a hundred
+   * small call frames per system call.
+   */
   static final int BUFFER = 8 * 1024;
 
   /**
@@ -58,19 +63,13 @@ final class Link {
   private volatile String writeFailure;
   private LinkHandler handler;
   private ReadWatch watch;
-  /**
-   * Whether the link's thread or a caller waiting for its reply reads; such a caller counts itself
-   * ({@link ReadRole#borrow}) before it sends its call.
-   */
+  /** Whether the link's thread reads or a caller waiting for its reply ({@link ReadRole#borrow}). */
   final ReadRole role = new ReadRole();
   private volatile ServedCalls served;
   volatile long lastReceived = System.nanoTime();
   private final Runnable arrived = () -> lastReceived = System.nanoTime();
   volatile long lastSent = System.nanoTime();
-  /**
-   * A heartbeat PING to this link is queued or being sent (a send may block while the peer reads
-   * nothing).
-   */
+  /** A heartbeat PING to this link is queued or being sent (and may block: the peer reads not). */
   volatile boolean pinging;
 
   Link(Socket socket, Handshake.Peer peer, boolean initiatedHere, int maxFrame) throws IOException {
@@ -82,10 +81,6 @@ final class Link {
     this.digests = peer.digests();
     this.sendLimit = peer.maxFrame() > 0 ? Math.min(maxFrame, peer.maxFrame()) : maxFrame;
     FrameCipher cipher = peer.cipher();
-    // Small buffers: a container keeps one link per neighbour, and with 100 containers on a host
-    // 2 x 64 KB per link was 12.7 MB of heap per container. Frames larger than a buffer bypass it
-    // (BufferedInput/OutputStream read and write those directly), and 8 KB still coalesces about
-    // a hundred small call frames per system call.
     this.input = new LinkInput(socket.getInputStream(), BUFFER, peerName, maxFrame, cipher,
         (type, buf, off, len) -> handler.isStale(this, type, buf, off, len), arrived);
     this.output = new LinkOutput(new BufferedOutputStream(socket.getOutputStream(), BUFFER), cipher,
@@ -177,23 +172,43 @@ final class Link {
     });
   }
 
-  /** When the write in progress began ({@link System#nanoTime}), or 0 if nobody writes now. */
-  long writingSince() {
-    return output.writingSince();
+  /**
+   * Writes what is queued (see {@link LinkOutput#write(boolean)}), or hands the rest to a worker
+   * once it has written for others a while; see {@link #writeFailed}.
+   */
+  private void writeQueued() throws IOException {
+    ReadWatch w = watch;
+    if (writeQueued(true) && (w == null || !w.read(this::writeRest))) {
+      writeQueued(false); // no worker: the container is closing
+    }
   }
 
-  /** Writes what is queued (see {@link LinkOutput#write}); see {@link #writeFailed}. */
-  private void writeQueued() throws IOException {
+  /** On a worker: writes all that is queued; writeFailed sees to a failure. */
+  private void writeRest() {
     try {
-      output.write();
+      writeQueued(false);
+    } catch (IOException e) {
+      // Seen to by writeFailed.
+    }
+  }
+
+  /** Whether the write stopped with frames left ({@code budgeted}); see {@link #writeQueued()}. */
+  private boolean writeQueued(boolean budgeted) throws IOException {
+    boolean left;
+    try {
+      left = output.write(budgeted);
     } catch (IOException e) {
       writeFailed("write failed: " + e.getMessage());
       throw e;
+    }
+    if (left) {
+      return true;
     }
     String closing = closeWhenDrained;
     if (closing != null && output.drained()) {
       close(closing);
     }
+    return false;
   }
 
   /** Reads the link on this thread, after handing out {@code first} if there is one. */

@@ -38,6 +38,8 @@ final class LinkOutput {
    * a peer that takes them slower than they are sent must not make the queue grow without bound.
    */
   static final long ROOM = 16 << 20;
+  /** How long a thread with work of its own writes for others at most (see {@link #write(boolean)}). */
+  static final long BUDGET = TimeUnit.MILLISECONDS.toNanos(1);
 
   private final Queue<byte[]> queue = new ConcurrentLinkedQueue<>();
   /** Bytes of the frames offered and not yet handed to the stream (taken off in batches). */
@@ -129,12 +131,18 @@ final class LinkOutput {
     }
   }
 
-  /** Writing went on: notes when, and takes {@code done} bytes written off the queued ones. */
-  private void progressed(long done) {
-    writingSince = System.nanoTime() | 1;
+  /**
+   * Writing went on: notes when, and takes {@code done} bytes written off the queued ones.
+   *
+   * @return the time ({@link System#nanoTime})
+   */
+  private long progressed(long done) {
+    long now = System.nanoTime();
+    writingSince = now | 1;
     if (done != 0 && queued.addAndGet(-done) < room) {
       wakeRoomWaiters();
     }
+    return now;
   }
 
   /**
@@ -176,20 +184,35 @@ final class LinkOutput {
    * @throws IOException if a write failed; what was queued is dropped (the link is to close)
    */
   void write() throws IOException {
+    write(false);
+  }
+
+  /**
+   * As {@link #write()}; {@code budgeted}: this thread has work of its own (a caller, the control
+   * thread, a link's reader) and stops, between frames, once it has written for {@link #BUDGET}
+   * while others keep queueing. Else a slow link kept busy would hold it writing for everyone as
+   * long as that lasts, a caller far past its deadline.
+   *
+   * @return true if it stopped so with frames left: the caller must see them written elsewhere
+   * @throws IOException if a write failed; what was queued is dropped (the link is to close)
+   */
+  boolean write(boolean budgeted) throws IOException {
     while (!queue.isEmpty() && writing.compareAndSet(false, true)) {
-      writingSince = System.nanoTime() | 1;
+      long began = System.nanoTime();
+      writingSince = began | 1;
+      boolean over = false; // found over budget at the last clock read
       try {
         int untimed = 0; // bytes handed to the stream since writingSince was taken
         long done = 0; // bytes of whole frames handed to the stream, still counted as queued
         byte[] next;
-        while ((next = queue.poll()) != null) {
+        while (!(budgeted && over) && (next = queue.poll()) != null) {
           // Sealing here, in write order, keeps the cipher's frame counter in step with the wire.
           byte[] bytes = cipher == null ? next : cipher.seal(next);
           for (int at = 0; at < bytes.length; ) {
             if (untimed >= Link.BUFFER) {
               // What went before left (or waits in the buffer), and this thread moves on: not
               // stalled. Not for every small frame: one clock read per buffer's worth will do.
-              progressed(done);
+              over = progressed(done) - began > BUDGET;
               done = 0;
               untimed = 0;
             }
@@ -202,6 +225,9 @@ final class LinkOutput {
         }
         if (untimed > 0) {
           progressed(done);
+        }
+        if (budgeted && over && !queue.isEmpty()) {
+          return true; // the rest, and the flush, are for whoever writes next
         }
         out.flush();
         written.run();
@@ -216,6 +242,7 @@ final class LinkOutput {
       }
       // A frame queued after our last poll by a sender that found us writing is ours: look again.
     }
+    return false;
   }
 
   /** When the write in progress began ({@link System#nanoTime}), or 0 if nobody writes now. */

@@ -17,7 +17,7 @@ import org.junit.jupiter.api.Timeout;
 @Timeout(30)
 class LinkOutputTest {
   /** Records each write's length and when, by the output's own clock, its writer last moved on. */
-  private static final class Recording extends OutputStream {
+  private static class Recording extends OutputStream {
     final List<Integer> lengths = new ArrayList<>();
     final List<Long> stamps = new ArrayList<>();
     LinkOutput output;
@@ -155,5 +155,32 @@ class LinkOutputTest {
     output.wakeRoomWaiters(); // as Link.close does
     assertTrue(waiting.get(5, TimeUnit.SECONDS), "it goes on (to find the link closed) at once");
     socket.release();
+  }
+
+  @Test
+  void aThreadWithWorkOfItsOwnStopsWritingForOthersAfterItsBudget() throws Exception {
+    // A socket that takes 2 ms for each write, as a slow link does once its buffers are full.
+    Recording socket = new Recording() {
+      @Override
+      public void write(byte[] b, int off, int len) {
+        super.write(b, off, len);
+        java.util.concurrent.locks.LockSupport.parkNanos(TimeUnit.MILLISECONDS.toNanos(2));
+      }
+    };
+    LinkOutput output = new LinkOutput(socket, null, () -> { });
+    socket.output = output;
+    for (int i = 0; i < 10; i++) {
+      output.offer(new byte[2 * Link.BUFFER]);
+    }
+    assertTrue(output.write(true), "frames left for another thread");
+    int written = socket.lengths.size();
+    assertTrue(written >= 2 && written < 10, written + " frames written");
+    assertTrue(!output.drained());
+
+    // A thread that writes for the link alone (a worker) writes everything.
+    assertTrue(!output.write(false));
+    assertEquals(10, socket.lengths.size());
+    assertTrue(output.drained());
+    assertEquals(0, output.queuedBytes());
   }
 }
