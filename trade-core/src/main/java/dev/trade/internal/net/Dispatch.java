@@ -80,6 +80,11 @@ final class Dispatch implements LinkHandler {
   }
 
   @Override
+  public boolean abandoned(byte[] frame) {
+    return calls.abandoned(frame);
+  }
+
+  @Override
   public void closed(Link link, String reason) {
     network.linkClosed(link, reason);
   }

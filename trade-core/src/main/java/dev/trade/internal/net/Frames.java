@@ -88,7 +88,8 @@ final class Frames {
     return frame;
   }
 
-  private static long getLong(byte[] b, int at) {
+  /** The big-endian {@code long} at {@code at}. */
+  static long getLong(byte[] b, int at) {
     long v = 0;
     for (int i = 0; i < 8; i++) {
       v = (v << 8) | (b[at + i] & 0xff);

@@ -84,7 +84,8 @@ final class Link {
     this.input = new LinkInput(socket.getInputStream(), BUFFER, peerName, maxFrame, cipher,
         (type, buf, off, len) -> handler.isStale(this, type, buf, off, len), arrived);
     this.output = new LinkOutput(new BufferedOutputStream(socket.getOutputStream(), BUFFER), cipher,
-        () -> lastSent = System.nanoTime());
+        () -> lastSent = System.nanoTime(), LinkOutput.ROOM,
+        frame -> handler != null && handler.abandoned(frame));
   }
 
   /** Starts reading on a thread of its own; {@code watch} keeps the link read while calls are served. */

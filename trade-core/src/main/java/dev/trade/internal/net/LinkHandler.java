@@ -17,6 +17,14 @@ interface LinkHandler {
     return false;
   }
 
+  /**
+   * Whether a frame queued for writing need not go out any more: a call whose caller has given
+   * up on it. Asked by the link's writer, only while much waits to be written.
+   */
+  default boolean abandoned(byte[] frame) {
+    return false;
+  }
+
   /** The link ended (closed, or its reading failed): called once, with why. */
   void closed(Link link, String reason);
 }

@@ -8,6 +8,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.BooleanSupplier;
+import java.util.function.Predicate;
 
 /**
  * A link's writing. A sender that finds the socket idle writes its frame itself (no thread
@@ -38,6 +39,8 @@ final class LinkOutput {
    * a peer that takes them slower than they are sent must not make the queue grow without bound.
    */
   static final long ROOM = 16 << 20;
+  /** From this many bytes waiting on, the writer leaves out frames nobody waits for any more. */
+  static final long CONGESTED = 256 << 10;
   /** How long a thread with work of its own writes for others at most (see {@link #write(boolean)}). */
   static final long BUDGET = TimeUnit.MILLISECONDS.toNanos(1);
 
@@ -45,6 +48,7 @@ final class LinkOutput {
   /** Bytes of the frames offered and not yet handed to the stream (taken off in batches). */
   private final AtomicLong queued = new AtomicLong();
   private final long room;
+  private final Predicate<byte[]> abandoned;
   /** Senders in {@link #awaitRoom}, waiting on this. */
   private final Object roomLock = new Object();
   private volatile int roomWaiters;
@@ -68,15 +72,21 @@ final class LinkOutput {
    * @param written runs after each flush
    */
   LinkOutput(OutputStream out, FrameCipher cipher, Runnable written) {
-    this(out, cipher, written, ROOM);
+    this(out, cipher, written, ROOM, frame -> false);
   }
 
-  /** @param room bytes queued and not yet written from which on new calls wait ({@link #ROOM}) */
-  LinkOutput(OutputStream out, FrameCipher cipher, Runnable written, long room) {
+  /**
+   * @param room bytes queued and not yet written from which on new calls wait ({@link #ROOM})
+   * @param abandoned whether a queued frame need not go out any more (see
+   *     {@link LinkHandler#abandoned}); asked only while {@link #CONGESTED}
+   */
+  LinkOutput(OutputStream out, FrameCipher cipher, Runnable written, long room,
+      Predicate<byte[]> abandoned) {
     this.out = out;
     this.cipher = cipher;
     this.written = written;
     this.room = room;
+    this.abandoned = abandoned;
   }
 
   /** Queues a complete frame (header included) for the next {@link #write}. */
@@ -206,6 +216,10 @@ final class LinkOutput {
         long done = 0; // bytes of whole frames handed to the stream, still counted as queued
         byte[] next;
         while (!(budgeted && over) && (next = queue.poll()) != null) {
+          if (queued.get() >= CONGESTED && abandoned.test(next)) {
+            done += next.length; // a call whose caller went on without it: left out
+            continue;
+          }
           // Sealing here, in write order, keeps the cipher's frame counter in step with the wire.
           byte[] bytes = cipher == null ? next : cipher.seal(next);
           for (int at = 0; at < bytes.length; ) {
@@ -223,7 +237,7 @@ final class LinkOutput {
           }
           done += next.length;
         }
-        if (untimed > 0) {
+        if (untimed > 0 || done > 0) {
           progressed(done);
         }
         if (budgeted && over && !queue.isEmpty()) {

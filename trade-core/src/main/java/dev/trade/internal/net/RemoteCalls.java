@@ -6,13 +6,10 @@ import dev.trade.TRADEInvocationException;
 import dev.trade.TRADESerializationException;
 import dev.trade.TRADEServiceUnavailableException;
 import dev.trade.TRADETimeoutException;
-import dev.trade.internal.call.Invocation;
 import dev.trade.internal.call.LocalInvoker;
 import dev.trade.internal.codec.ByteSink;
 import dev.trade.internal.codec.ByteSource;
 import dev.trade.internal.codec.Codec;
-import dev.trade.internal.codec.MalformedValueException;
-import dev.trade.internal.registry.LocalService;
 import dev.trade.internal.registry.ServiceDescriptor;
 import java.io.IOException;
 import java.lang.System.Logger;
@@ -28,10 +25,9 @@ import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Predicate;
 
 /**
- * Remote calls over links: the calling side (request ids, pending replies, deadlines), the providing
- * side (decoding arguments, running the host chain, encoding the reply) and
- * forwarding of calls and replies between containers that have no direct link. Replies find their
- * way back to the caller through {@link Replies}.
+ * Remote calls over links: the calling side (request ids, pending replies, deadlines), and
+ * forwarding of calls and replies between containers that have no direct link. The providing side
+ * is {@link Serving}; replies find their way back to the caller through {@link Replies}.
  *
  * <p>A link's reading thread serves the calls it reads and completes the futures of replies; a
  * {@link ReadWatch} keeps the link read while a call takes long, so one slow service never stalls
@@ -70,8 +66,8 @@ final class RemoteCalls {
   private final UUID self;
   private final Codec codec;
   private final Router router;
-  private final Network.Host host;
   private final Replies replies;
+  private final Serving serving;
   private final int maxFrame;
   private final AtomicLong nextId = new AtomicLong();
   private final Map<Long, Pending> pending = new ConcurrentHashMap<>();
@@ -86,8 +82,8 @@ final class RemoteCalls {
     this.self = self;
     this.codec = codec;
     this.router = router;
-    this.host = host;
     this.replies = new Replies(self, router, timer, maxFrame);
+    this.serving = new Serving(self, codec, host, replies, maxFrame);
     this.maxFrame = maxFrame;
     this.deadlines = new Deadlines(timer, pending);
   }
@@ -237,7 +233,20 @@ final class RemoteCalls {
           + self + " serves " + MAX_SERVED_PER_LINK + " calls from this link at once already");
       return true;
     }
-    return from.serveHere(() -> serve(from, payload));
+    return from.serveHere(() -> serving.serve(from, payload));
+  }
+
+  /**
+   * Whether {@code frame} (header included) is a CALL made here whose caller has given up on it
+   * (its deadline passed, or it failed): a congested link need not carry it any more, and its
+   * service should not run long after its caller went on without it.
+   */
+  boolean abandoned(byte[] frame) {
+    int at = Wire.HEADER;
+    return frame[5] == Wire.CALL && frame.length >= at + Frames.ROUTING + 8
+        && Frames.getLong(frame, at) == self.getMostSignificantBits()
+        && Frames.getLong(frame, at + 8) == self.getLeastSignificantBits()
+        && !pending.containsKey(Frames.getLong(frame, at + Frames.ROUTING));
   }
 
   /**
@@ -297,87 +306,6 @@ final class RemoteCalls {
             + " the route to container " + destination + " was lost");
       }
     }
-  }
-
-  private void serve(Link from, byte[] payload) {
-    ByteSource in = ByteSource.of(payload, Frames.ROUTING, payload.length - Frames.ROUTING);
-    try {
-      in.readLong(); // request id, echoed by Replies.replyStart
-      long serviceId = in.readLong();
-      int timeoutMs = in.readInt();
-      int count = in.readVarUInt();
-      LocalService s = host.local(serviceId);
-      if (s == null) {
-        replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer:"
-            + " service " + serviceId + " was deregistered from container " + self);
-        return;
-      }
-      ServiceDescriptor d = s.descriptor();
-      if (count != d.parameterTypeNames().size()) {
-        replies.reply(from, payload, Wire.FAILED_BAD_ARGUMENTS, "Service " + d.signature()
-            + " takes " + d.parameterTypeNames().size() + " arguments but got " + count);
-        return;
-      }
-      ClassLoader loader = s.target().getClass().getClassLoader();
-      Object[] args = new Object[count];
-      for (int i = 0; i < count; i++) {
-        args[i] = codec.read(in, loader == null ? ClassLoader.getSystemClassLoader() : loader);
-      }
-      long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
-      Object result = host.invoke(new Invocation(d, args, deadline));
-      ByteSink out = replies.replyStart(payload, Wire.OK);
-      try {
-        codec.write(result, out);
-      } catch (TRADESerializationException e) {
-        replies.reply(from, payload, Wire.FAILED_SERIALIZATION, "The result of " + d.signature()
-            + " cannot travel: " + e.getMessage());
-        return;
-      }
-      byte[] frame = Frames.finish(out);
-      if (!fits(frame)) {
-        replies.reply(from, payload, Wire.FAILED_SERIALIZATION, "The result of " + d.signature()
-            + " cannot travel: the reply needs " + (frame.length - 4)
-            + " bytes, more than MAXFRAMESIZE=" + maxFrame);
-        return;
-      }
-      replies.sendReply(from, payload, frame);
-    } catch (TRADEInvocationException e) {
-      ByteSink out = replies.replyStart(payload, Wire.FAILED_INVOCATION);
-      try {
-        codec.write(e.getCause(), out);
-        byte[] frame = Frames.finish(out);
-        if (fits(frame)) {
-          replies.sendReply(from, payload, frame);
-        } else {
-          replies.reply(from, payload, Wire.FAILED_OTHER, e.getMessage());
-        }
-      } catch (TRADESerializationException notEncodable) {
-        replies.reply(from, payload, Wire.FAILED_OTHER, e.getMessage());
-      }
-    } catch (TRADEServiceUnavailableException e) {
-      replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, e.getMessage());
-    } catch (TRADEBadArgumentsException e) {
-      replies.reply(from, payload, Wire.FAILED_BAD_ARGUMENTS, e.getMessage());
-    } catch (MalformedValueException e) {
-      replies.reply(from, payload, Wire.FAILED_SERIALIZATION, "malformed call: " + e.getMessage());
-      if (Frames.source(payload).equals(from.peerId)) {
-        // The peer itself wrote bytes that are not a value: it is broken or hostile.
-        LOG.log(Level.WARNING, "malformed call from {0}: {1}; closing the connection",
-            from.peerName, e.getMessage());
-        from.closeAfterSending("malformed call: " + e.getMessage());
-      }
-    } catch (TRADESerializationException e) {
-      replies.reply(from, payload, Wire.FAILED_SERIALIZATION, e.getMessage());
-    } catch (TRADETimeoutException e) {
-      replies.reply(from, payload, Wire.FAILED_TIMEOUT, e.getMessage());
-    } catch (TRADEException | RuntimeException e) {
-      replies.reply(from, payload, Wire.FAILED_OTHER, String.valueOf(e.getMessage()));
-    }
-  }
-
-  /** Whether a finished frame is within this container's own MAXFRAMESIZE. */
-  private boolean fits(byte[] frame) {
-    return Frames.fits(frame, maxFrame);
   }
 
   /** Fails at once every call waiting on {@code container} (it left or became unreachable). */

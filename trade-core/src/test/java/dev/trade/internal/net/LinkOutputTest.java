@@ -95,7 +95,7 @@ class LinkOutputTest {
   @Test
   void sendersWaitForRoomWhileThePeerTakesNothingAndGoOnOnceItDoes() throws Exception {
     Stalled socket = new Stalled();
-    LinkOutput output = new LinkOutput(socket, null, () -> { }, 1000);
+    LinkOutput output = new LinkOutput(socket, null, () -> { }, 1000, frame -> false);
     output.offer(new byte[600]);
     CompletableFuture<Void> writer = CompletableFuture.runAsync(() -> {
       try {
@@ -128,7 +128,7 @@ class LinkOutputTest {
   @Test
   void aLinkThatClosesWakesTheSendersWaitingForRoom() throws Exception {
     Stalled socket = new Stalled();
-    LinkOutput output = new LinkOutput(socket, null, () -> { }, 100);
+    LinkOutput output = new LinkOutput(socket, null, () -> { }, 100, frame -> false);
     output.offer(new byte[600]);
     CompletableFuture.runAsync(() -> {
       try {
@@ -182,5 +182,29 @@ class LinkOutputTest {
     assertEquals(10, socket.lengths.size());
     assertTrue(output.drained());
     assertEquals(0, output.queuedBytes());
+  }
+
+  @Test
+  void aCongestedLinkLeavesOutTheFramesNobodyWaitsForAnyMore() throws Exception {
+    Recording socket = new Recording();
+    java.util.Set<byte[]> givenUp = java.util.Collections.newSetFromMap(
+        new java.util.IdentityHashMap<>());
+    LinkOutput output = new LinkOutput(socket, null, () -> { }, LinkOutput.ROOM, givenUp::contains);
+    socket.output = output;
+    int size = 64 * 1024;
+    int frames = (int) (2 * LinkOutput.CONGESTED / size);
+    for (int i = 0; i < frames; i++) {
+      byte[] frame = new byte[size];
+      if (i % 2 == 1) {
+        givenUp.add(frame);
+      }
+      output.offer(frame);
+    }
+    output.write();
+    // Left out while at least CONGESTED bytes waited (the first half of the frames); the rest go.
+    int leftOut = frames - socket.lengths.size();
+    assertTrue(leftOut >= frames / 4 - 1 && leftOut <= frames / 2, leftOut + " of " + frames);
+    assertEquals(0, output.queuedBytes());
+    assertTrue(output.drained());
   }
 }
