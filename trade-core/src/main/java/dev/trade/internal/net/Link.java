@@ -153,12 +153,9 @@ final class Link {
 
   /**
    * Ends a burst and writes what was sent during it (whoever reads, when nothing whole is left to
-   * hand out: before the link's thread blocks in a read, or while a caller waits on). Guarded
-   * like a served call: should the peer not read (its reader busy writing to us),
-   * the watch hands reading to another thread after a tick, so two links that write to each other
-   * cannot wait for each other for ever.
-   *
-   * @return true if this thread still reads the link
+   * hand out). Guarded like a served call: should the peer not read (its reader busy writing to
+   * us), the watch hands reading on after a tick, so two links that write to each other cannot
+   * wait for each other for ever. Returns true if this thread still reads the link.
    */
   private boolean endBurst() {
     if (!output.endBurst()) {
@@ -266,13 +263,10 @@ final class Link {
   }
 
   /**
-   * A caller reads the link until its reply is done (and the frames read with it are handed
-   * out) or its time is up. It hands out only frames that have arrived whole and never blocks in
-   * a read, so that it stops in time, whatever the peer sends; the end of the stream, or a frame
-   * larger than the buffer, is left to the link's thread.
-   *
-   * @return null when it stops reading, {@link #MOVED} if reading went on in another thread,
-   *     else why the link ends
+   * A caller reads the link until its reply is done (and the frames read with it are handed out)
+   * or its time is up; answers as {@link #readOne} does. It hands out only frames that arrived
+   * whole and never blocks in a read, so that it stops in time whatever the peer sends; the end of
+   * the stream, or a frame larger than the buffer, is left to the link's thread.
    */
   private String readLent(CompletableFuture<?> reply, long until) {
     try {
@@ -297,12 +291,9 @@ final class Link {
   }
 
   /**
-   * Reads one frame and hands it out. A caller that reads ({@code lent}) hands a call, and the
-   * reading with it, to another thread: serving it could take any time, which its caller must
-   * not wait for.
-   *
-   * @return null to go on reading, {@link #MOVED} if reading went on in another thread, else why
-   *     the link ends
+   * Reads one frame and hands it out; returns null to go on reading, {@link #MOVED} if reading went
+   * on in another thread, else why the link ends. A caller that reads ({@code lent}) hands a call,
+   * and the reading with it, to another thread: its caller must not wait for it to be served.
    */
   private String readOne(boolean lent) {
     LinkInput.Frame f;
