@@ -7,11 +7,13 @@ A and B have no route to each other. Each host runs one container JVM
 (dev.trade.examples.system.HostNode) with DISCOVERYRANGE=subnet on its own interfaces. The test
 checks that the containers find each other by multicast within each subnet, that A and B call each
 other through C's forwarding, that killing C makes the services of the other side leave on A and on
-B within the detection bound, that a new C brings them back, and that a silent (frozen) C is
-declared gone after FAILURETIMEOUT and rejoins when it wakes up. See docs/system-tests.md.
+B within the detection bound, that a new C brings them back, that a slow link which keeps carrying
+bytes is not taken for dead, and that a silent (frozen) C is declared gone after FAILURETIMEOUT and
+rejoins when it wakes up. See docs/system-tests.md.
 
-Needs root, `ip netns` (iproute2), and `unshare`, `nsenter` and `setpriv` (util-linux). Where
-they are unavailable the test is skipped with the reason, unless CI=true, where that is a failure.
+Needs root, `ip netns` and `tc` (iproute2), and `unshare`, `nsenter` and `setpriv` (util-linux).
+Where they are unavailable the test is skipped with the reason, unless CI=true, where that is a
+failure.
 Every packet stays inside the namespaces this test creates; nothing runs with subnet range outside
 them. The test runs in a private mount namespace of its own, so the namespaces' mounts never reach
 the rest of the machine and disappear with the test even if it is killed.

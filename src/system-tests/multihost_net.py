@@ -34,7 +34,7 @@ def unavailable_reason():
         return "not Linux"
     if os.geteuid() != 0:
         return "not running as root (network namespaces and veth pairs need root)"
-    for tool in ("ip", "unshare", "nsenter", "setpriv", "mount"):
+    for tool in ("ip", "tc", "unshare", "nsenter", "setpriv", "mount"):
         if shutil.which(tool) is None:
             return "'%s' not found on PATH" % tool
     if java_binary() is None:

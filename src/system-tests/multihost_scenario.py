@@ -1,4 +1,4 @@
-"""Multi-host system test, the scenario: its eleven steps in order, each printed as a PASS or FAIL
+"""Multi-host system test, the scenario: its twelve steps in order, each printed as a PASS or FAIL
 line with what it measured; a step after a failed one fails as "not run". Scenario.run runs them,
 Scenario.cleanup stops the nodes and removes the namespaces. Used by multihost.py; see
 docs/system-tests.md for what each step proves.
@@ -8,7 +8,7 @@ import re
 import signal
 import time
 
-from multihost_net import StepFailure, Topology
+from multihost_net import StepFailure, Topology, run
 from multihost_node import FAILURE_TIMEOUT_MS, HEARTBEAT_MS, STARTUP_S, Node
 
 # Bounds. A killed process's sockets are closed by its kernel, so its neighbours see the loss at
@@ -25,6 +25,8 @@ SILENT_DETECTION_MIN_MS = FAILURE_TIMEOUT_MS - 2 * HEARTBEAT_MS
 SILENT_DETECTION_MS = FAILURE_TIMEOUT_MS + 2000
 REJOIN_S = 15           # a frozen container rejoins at the next announcement (BROADCASTINTERVAL 3 s)
 STEP_S = 10             # anything else
+SLOW_CALLS = 12         # of 1 MiB each, over a 16 Mbit/s link (step 8)
+SLOW_S = 40
 
 
 # Per host: the TRADE settings besides DISCOVERYRANGE=subnet. Between them they cover named and
@@ -64,7 +66,7 @@ class Scenario:
         self.log_dir = log_dir
         self.nodes = {h: Node(self.topology, h, log_dir) for h in "ABC"}
         self.results = []
-        self.catching_up = None     # (from, to): while a woken C caught up (step 9)
+        self.catching_up = None     # (from, to): while a woken C caught up (step 10)
 
     def step(self, title, fn):
         if any(not ok for _, ok, _ in self.results):
@@ -174,6 +176,30 @@ class Scenario:
             ba = call(B, "host-A", "A on [10.200.1.1]")
             return "A->B %s ms, B->A %s ms through the new C" % (ab, ba)
 
+        def slow_link():
+            # A's link to C at 16 Mbit/s (2 MB/s): 12 MiB of calls take about six seconds to leave
+            # A, twice FAILURETIMEOUT, while C reads all along. No link may be taken for dead.
+            def shape(verb, *args):
+                run(self.topology.exec_prefix("A") + ["tc", "qdisc", verb, "dev", "veth-a", "root"]
+                    + list(args))
+            shape("add", "tbf", "rate", "16mbit", "burst", "32kb", "latency", "5s")
+            try:
+                A.send("bulk host-B %d 1024" % SLOW_CALLS)
+                line = A.expect(r"^BULK(-FAILED)? host-B ", SLOW_S)
+            finally:
+                shape("del")
+            m = re.search(r"^BULK host-B %d answered in (\d+) ms" % SLOW_CALLS, line.text)
+            if not m:
+                raise StepFailure("A: " + line.text)
+            if int(m.group(1)) < FAILURE_TIMEOUT_MS:
+                raise StepFailure("the link was not slow: " + line.text)
+            for n in (A, B, C):
+                for other in "ABC".replace(n.host, ""):
+                    if n.pending(left(other)):
+                        raise StepFailure("%s saw %s leave during the slow transfer" % (n.host, other))
+            return ("%d calls of 1 MiB A->B over a 16 Mbit/s A-C link answered in %s ms (FAILURETIMEOUT=%d);"
+                    " no link taken for dead" % (SLOW_CALLS, m.group(1), FAILURE_TIMEOUT_MS))
+
         def frozen():
             t_stop, delays = c_stops(signal.SIGSTOP, SILENT_DETECTION_MS / 1000.0 + STEP_S)
             text = describe_left(delays)
@@ -243,7 +269,7 @@ class Scenario:
                     if l.consumed:
                         continue
                     # A LEFT printed while C caught up after waking, and its JOINED, seen too late
-                    # by step 9 (they are printed on the notification thread).
+                    # by step 10 (they are printed on the notification thread).
                     m = re.match(r"^LEFT (\S+) ", l.text)
                     if m and self.catching_up and self.catching_up[0] <= l.stamp <= self.catching_up[1]:
                         rejoin = [x for _, x in lines[i + 1:] if x.text.startswith("JOINED %s " % m.group(1))
@@ -266,6 +292,7 @@ class Scenario:
                   killed)
         self.step("C restarted: services rejoin on both sides", restarted)
         self.step("calls A->B and B->A work again", forwarding_again)
+        self.step("slow link: calls that take longer than FAILURETIMEOUT to leave", slow_link)
         self.step("C frozen (SIGSTOP): left on A and B after FAILURETIMEOUT (%d..%d ms)"
                   % (SILENT_DETECTION_MIN_MS, SILENT_DETECTION_MS), frozen)
         self.step("C wakes up (SIGCONT): services rejoin, calls work", woken)

@@ -19,6 +19,8 @@ import java.util.Collections;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionException;
 
 /**
  * One container of the multi-host system tests (src/system-tests): it plays a host of its own,
@@ -45,12 +47,16 @@ import java.util.TreeMap;
  * <p>It reads commands, one a line, from standard input: {@code call <group>} (find
  * {@code whereAmI()} in that group and call it), {@code call <group> <ms>} (the same with
  * {@code whereAmIAfter(ms)}, which answers after that delay and prints {@code SERVING} where it
- * runs), {@code neighbours}, and {@code quit}. Calls run on threads of their own. At the end
+ * runs), {@code bulk <group> <calls> <KiB>} (that many calls of {@code length(byte[])} at once,
+ * each with an argument of that size; prints {@code BULK <group> <calls> answered in <ms> ms} or
+ * {@code BULK-FAILED <group> <n> of <calls>: <first failure>}), {@code neighbours}, and
+ * {@code quit}. Calls run on threads of their own. At the end
  * of its input it closes the container and exits, so that it never outlives the test that drives
  * it. Logs go to standard error.
  */
 public final class HostNode {
   private static final Duration CALL_TIMEOUT = Duration.ofSeconds(5);
+  private static final Duration BULK_TIMEOUT = Duration.ofSeconds(60);
 
   /** The service every node provides: where it runs. */
   public static final class Place {
@@ -63,6 +69,12 @@ public final class HostNode {
     @TRADEService
     public String whereAmI() {
       return name + " on " + ipv4Addresses();
+    }
+
+    /** The length of {@code data}: a call whose argument is as large as one likes. */
+    @TRADEService
+    public int length(byte[] data) {
+      return data.length;
     }
 
     /** As {@link #whereAmI()}, answering after {@code millis} ms: a call that is in flight a while. */
@@ -140,6 +152,12 @@ public final class HostNode {
           Thread t = new Thread(() -> call(container, words[1], delay), "call " + words[1]);
           t.setDaemon(true);
           t.start();
+        } else if (words[0].equals("bulk") && words.length == 4) {
+          int calls = Integer.parseInt(words[2]);
+          int kib = Integer.parseInt(words[3]);
+          Thread t = new Thread(() -> bulk(container, words[1], calls, kib), "bulk " + words[1]);
+          t.setDaemon(true);
+          t.start();
         } else if (words[0].equals("neighbours")) {
           say("NEIGHBOURS " + String.join(",", container.getNeighbours()));
         } else {
@@ -169,6 +187,45 @@ public final class HostNode {
     } catch (TRADEException e) {
       say("CALL-FAILED " + group + " " + e.getClass().getSimpleName() + ": " + e.getMessage());
     }
+  }
+
+  /** Makes {@code calls} calls of {@code length(byte[])} in {@code group} at once, {@code kib} KiB each. */
+  private static void bulk(TRADEContainer container, String group, int calls, int kib) {
+    long start = System.nanoTime();
+    List<CompletableFuture<Integer>> results = new ArrayList<>();
+    try {
+      TRADEServiceInfo info = container.getAvailableService(
+          new TRADEServiceConstraints().inGroups(group).name("length")).withTimeout(BULK_TIMEOUT);
+      for (int i = 0; i < calls; i++) {
+        CompletableFuture<Integer> result = new CompletableFuture<>();
+        results.add(result);
+        Thread t = new Thread(() -> {
+          try {
+            result.complete(info.call(Integer.class, (Object) new byte[kib * 1024]));
+          } catch (TRADEException e) {
+            result.completeExceptionally(e);
+          }
+        }, "bulk call " + i);
+        t.setDaemon(true);
+        t.start();
+      }
+    } catch (TRADEException e) {
+      say("BULK-FAILED " + group + " " + calls + " of " + calls + ": " + e);
+      return;
+    }
+    List<String> failures = new ArrayList<>();
+    for (CompletableFuture<Integer> result : results) {
+      try {
+        if (result.join() != kib * 1024) {
+          failures.add("wrong length " + result.join());
+        }
+      } catch (CompletionException e) {
+        failures.add(e.getCause().toString());
+      }
+    }
+    long ms = Duration.ofNanos(System.nanoTime() - start).toMillis();
+    say(failures.isEmpty() ? "BULK " + group + " " + calls + " answered in " + ms + " ms"
+        : "BULK-FAILED " + group + " " + failures.size() + " of " + calls + ": " + failures.get(0));
   }
 
   /** This namespace's IPv4 addresses other than loopback: which host answered. */
