@@ -21,6 +21,11 @@ import java.util.function.Predicate;
  * that wake callers who call again at once), what they send is left for the reader to write once
  * it has handed them all out ({@link #endBurst}), in one system call.
  *
+ * <p>A slow peer is not a dead one: the bytes go out in pieces, each timed ({@link #writingSince}).
+ * Its queue is bounded for calls ({@link #ROOM}), and on it the calls nobody waits for any more
+ * are left out ({@link #CONGESTED}); a caller or the control thread that finds itself writing for
+ * others on it stops after {@link #BUDGET} ({@link #write(boolean)}).
+ *
  * <p>Safe for concurrent use.
  */
 final class LinkOutput {
@@ -41,7 +46,7 @@ final class LinkOutput {
   static final long ROOM = 16 << 20;
   /** From this many bytes waiting on, the writer leaves out frames nobody waits for any more. */
   static final long CONGESTED = 256 << 10;
-  /** How long a thread with work of its own writes for others at most (see {@link #write(boolean)}). */
+  /** How long a thread with work of its own writes for others ({@link #write(boolean)}). */
   static final long BUDGET = TimeUnit.MILLISECONDS.toNanos(1);
 
   private final Queue<byte[]> queue = new ConcurrentLinkedQueue<>();
@@ -259,7 +264,7 @@ final class LinkOutput {
     return false;
   }
 
-  /** When the write in progress began ({@link System#nanoTime}), or 0 if nobody writes now. */
+  /** When the writer last moved on ({@link System#nanoTime}), or 0 if nobody writes now. */
   long writingSince() {
     return writingSince;
   }
