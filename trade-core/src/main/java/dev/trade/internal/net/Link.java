@@ -10,12 +10,9 @@ import java.util.concurrent.CompletableFuture;
  * One authenticated connection to a neighbouring container.
  *
  * <p><b>Writing</b> combines frames ({@link LinkOutput}). <b>Reading</b> happens on one thread at a
- * time, which hands each frame to the {@link LinkHandler}. The handler serves a call on that thread
- * ({@link ServedCalls}); a {@link ReadWatch} moves reading to another thread when a call takes
- * longer than a tick. A lone caller waiting for its reply reads the link itself ({@link #readFor},
- * {@link ReadRole}). Frames the reading thread sends while the next frame is already buffered
- * (replies to a burst of calls) wait until it has served that burst, and then leave with one
- * system call.
+ * time ({@link LinkReader}), which hands each frame to the {@link LinkHandler}. The handler serves
+ * a call on that thread ({@link ServedCalls}); a {@link ReadWatch} moves reading to another thread
+ * when a call takes longer than a tick. This class holds the link's state, sends, and closes.
  *
  * <p>This class is safe for concurrent use.
  */
@@ -27,13 +24,6 @@ final class Link {
    * small call frames per system call.
    */
   static final int BUFFER = 8 * 1024;
-
-  /**
-   * What the read steps answer when reading went on in another thread; compared by identity, so
-   * that no reason why a link ends can be taken for it.
-   */
-  @SuppressWarnings("StringOperationCanBeSimplified")
-  private static final String MOVED = new String("reading moved");
 
   final UUID peerId;
   /** {@link #peerId} as text, as link states and tables name containers. */
@@ -49,6 +39,8 @@ final class Link {
   final int sendLimit;
   private final Socket socket;
   private final LinkInput input;
+  /** Reads the link, on whichever thread reads it now. */
+  final LinkReader reader;
   /** What is sent over the link; callers look at its room before they queue a call. */
   final LinkOutput output;
   /** Completed by {@link #close}, first of all. */
@@ -63,13 +55,19 @@ final class Link {
   private volatile String writeFailure;
   private LinkHandler handler;
   private ReadWatch watch;
-  /** Whether the link's thread reads or a caller waiting for its reply ({@link ReadRole#borrow}). */
+  /**
+   * Whether the link's thread or a caller waiting for its reply reads; such a caller counts itself
+   * ({@link ReadRole#borrow}) before it sends its call.
+   */
   final ReadRole role = new ReadRole();
   private volatile ServedCalls served;
   volatile long lastReceived = System.nanoTime();
   private final Runnable arrived = () -> lastReceived = System.nanoTime();
   volatile long lastSent = System.nanoTime();
-  /** A heartbeat PING to this link is queued or being sent (and may block: the peer reads not). */
+  /**
+   * A heartbeat PING to this link is queued or being sent (a send may block while the peer reads
+   * nothing).
+   */
   volatile boolean pinging;
 
   Link(Socket socket, Handshake.Peer peer, boolean initiatedHere, int maxFrame) throws IOException {
@@ -83,21 +81,25 @@ final class Link {
     FrameCipher cipher = peer.cipher();
     this.input = new LinkInput(socket.getInputStream(), BUFFER, peerName, maxFrame, cipher,
         (type, buf, off, len) -> handler.isStale(this, type, buf, off, len), arrived);
+    this.reader = new LinkReader(this, input);
     this.output = new LinkOutput(new BufferedOutputStream(socket.getOutputStream(), BUFFER), cipher,
         () -> lastSent = System.nanoTime(), LinkOutput.ROOM,
         frame -> handler != null && handler.abandoned(frame));
   }
 
-  /** Starts reading on a thread of its own; {@code watch} keeps the link read while calls are served. */
+  /**
+   * Starts reading on a thread of its own; {@code watch} keeps the link read while calls are
+   * served.
+   */
   void start(LinkHandler handler, ReadWatch watch) {
     this.handler = handler;
     this.watch = watch;
     this.served = new ServedCalls(watch, input, () -> {
-      if (!watch.read(() -> readLoop(null))) {
+      if (!watch.read(() -> reader.loop(null))) {
         close("container closing");
       }
     });
-    Thread t = new Thread(() -> readLoop(null), "trade-reader-" + peerName);
+    Thread t = new Thread(() -> reader.loop(null), "trade-reader-" + peerName);
     t.setDaemon(true);
     t.start();
   }
@@ -157,7 +159,7 @@ final class Link {
    * us), the watch hands reading on after a tick, so two links that write to each other cannot
    * wait for each other for ever. Returns true if this thread still reads the link.
    */
-  private boolean endBurst() {
+  boolean endBurst() {
     if (!output.endBurst()) {
       return true;
     }
@@ -209,148 +211,6 @@ final class Link {
     return false;
   }
 
-  /** Reads the link on this thread, after handing out {@code first} if there is one. */
-  private void readLoop(LinkInput.Frame first) {
-    Thread self = Thread.currentThread();
-    String ownName = self.getName();
-    // Whichever thread reads the link carries its name, so thread dumps show who reads what.
-    self.setName("trade-link-" + peerName);
-    try {
-      readFrames(first);
-    } finally {
-      self.setName(ownName);
-    }
-  }
-
-  private void readFrames(LinkInput.Frame first) {
-    role.takenOver(); // a hand-off's new thread reads now, whoever read before
-    String why = first == null ? null : handOut(first);
-    while (why == null) {
-      if (input.buffered() == 0 && role.callerWaits() && !closed.isDone()) {
-        // A lone caller waits for its reply over this link: it reads the reply itself.
-        if (!endBurst() || !role.lend()) {
-          return; // another thread reads now, or reading ended
-        }
-        continue;
-      }
-      why = readOne(false);
-    }
-    if (why != MOVED) {
-      end(why);
-    }
-  }
-
-  /**
-   * Waits for {@code reply} until {@code until} ({@link System#nanoTime}), reading the link
-   * itself whenever it is lent to callers (see {@link ReadRole}): then the reply wakes no thread
-   * on its way to this one. The caller has called {@link ReadRole#borrow} before sending its
-   * call, and calls {@link ReadRole#giveBack} after this.
-   */
-  void readFor(CompletableFuture<?> reply, long until) {
-    // A closed link brings no reply; the caller is failed from elsewhere (see LinkHandler#closed).
-    while (!reply.isDone() && !closed.isDone() && System.nanoTime() - until < 0) {
-      if (role.tryTake()) {
-        String why = readLent(reply, until);
-        if (why == null) {
-          role.release();
-        } else if (why != MOVED) {
-          end(why);
-        }
-      } else {
-        Thread.onSpinWait();
-      }
-    }
-  }
-
-  /**
-   * A caller reads the link until its reply is done (and the frames read with it are handed out)
-   * or its time is up; answers as {@link #readOne} does. It hands out only frames that arrived
-   * whole and never blocks in a read, so that it stops in time whatever the peer sends; the end of
-   * the stream, or a frame larger than the buffer, is left to the link's thread.
-   */
-  private String readLent(CompletableFuture<?> reply, long until) {
-    try {
-      while (!closed.isDone()) {
-        if (input.fillWithoutBlocking()) {
-          String why = readOne(true);
-          if (why != null) {
-            return why;
-          }
-        } else if (!endBurst()) { // what was sent while a burst was handed out leaves now
-          return MOVED; // the flush blocked and reading went on in another thread
-        } else if (reply.isDone() || System.nanoTime() - until >= 0) {
-          return null;
-        } else {
-          Thread.onSpinWait();
-        }
-      }
-      return "closed";
-    } catch (IOException e) {
-      return lost(e);
-    }
-  }
-
-  /**
-   * Reads one frame and hands it out; returns null to go on reading, {@link #MOVED} if reading went
-   * on in another thread, else why the link ends. A caller that reads ({@code lent}) hands a call,
-   * and the reading with it, to another thread: its caller must not wait for it to be served.
-   */
-  private String readOne(boolean lent) {
-    LinkInput.Frame f;
-    try {
-      if (closed.isDone()) {
-        return "closed";
-      }
-      if (!input.holdsWholeFrame() && !endBurst()) {
-        return MOVED; // the flush blocked and reading went on in another thread
-      }
-      f = input.readFrame();
-    } catch (LinkInput.Broken e) {
-      return e.getMessage();
-    } catch (IOException e) {
-      return lost(e);
-    } catch (RuntimeException e) {
-      return malformed(e);
-    }
-    if (f == null) {
-      return null; // a copy, dropped
-    }
-    output.burst(input.holdsWholeFrame()); // more to hand out after this one
-    if (lent && f.type() == Wire.CALL) {
-      role.takenOver();
-      return watch.read(() -> readLoop(f)) ? MOVED : "container closing";
-    }
-    return handOut(f);
-  }
-
-  /** Hands a frame to the handler; answers as {@link #readOne} does. */
-  private String handOut(LinkInput.Frame f) {
-    try {
-      return handler.frame(this, f.type(), f.payload()) ? null : MOVED;
-    } catch (IOException e) {
-      return lost(e);
-    } catch (RuntimeException e) {
-      return malformed(e);
-    }
-  }
-
-  private String lost(IOException e) {
-    return "connection to " + peerName + " lost: " + e.getMessage();
-  }
-
-  private String malformed(RuntimeException e) {
-    return "malformed frame from " + peerName + ": " + e;
-  }
-
-  /** The reading thread's end: closes the link and tells the handler why. */
-  private void end(String reason) {
-    role.ended();
-    String closedHere = closeReason; // closed while we read (silence, goodbye...): that is why
-    String why = closedHere != null ? closedHere : reason;
-    close(why);
-    handler.closed(this, why);
-  }
-
   /**
    * A write failed, mostly because the peer closed the connection, perhaps right after its
    * goodbye, which may still wait to be read. Closing the socket now would drop it, and an orderly
@@ -365,6 +225,29 @@ final class Link {
     } catch (IOException e) {
       close(why);
     }
+  }
+
+  /**
+   * Whether {@link #close} closed the socket; a failed write alone does not (see
+   * {@link #isClosed}): reading goes on to the end the peer left.
+   */
+  boolean socketClosed() {
+    return closed.isDone();
+  }
+
+  /** Why the link was closed, by whoever closed it first; null while it is open. */
+  String closeReason() {
+    return closeReason;
+  }
+
+  /** The handler given to {@link #start}, which the reader hands frames to. */
+  LinkHandler handler() {
+    return handler;
+  }
+
+  /** The watch given to {@link #start}, which the reader hands reading to. */
+  ReadWatch readWatch() {
+    return watch;
   }
 
   /** Whether the link is closed, or can no longer be written to: then it is about to close. */

@@ -66,7 +66,7 @@ final class ReplyWait {
         if (lone && SPIN && estimate < MAX_SPIN_NANOS) {
           long until = sent + Math.min(MAX_SPIN_NANOS, 2 * estimate);
           if (borrowed) {
-            link.readFor(reply, until);
+            link.reader.readFor(reply, until);
           } else {
             while (!reply.isDone() && System.nanoTime() - until < 0) {
               Thread.onSpinWait();

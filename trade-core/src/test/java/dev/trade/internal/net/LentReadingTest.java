@@ -140,7 +140,7 @@ class LentReadingTest {
     Link link = started(h);
     borrow(link);
     sendFromFar(Wire.REPLY);
-    link.readFor(h.reply, in(WAIT));
+    link.reader.readFor(h.reply, in(WAIT));
     link.role.giveBack(false);
     assertTrue(h.reply.isDone(), "the reply came within the wait");
     assertSame(Thread.currentThread(), h.replyReaders.poll(), "the caller read its reply");
@@ -151,7 +151,7 @@ class LentReadingTest {
     Handler h = new Handler();
     Link link = started(h);
     borrow(link);
-    link.readFor(new CompletableFuture<>(), in(Duration.ofMillis(1))); // no reply comes
+    link.reader.readFor(new CompletableFuture<>(), in(Duration.ofMillis(1))); // no reply comes
     link.role.giveBack(false);
     Deadline.await(WAIT, () -> !link.role.isLent(), "the link's thread to take reading back");
     sendFromFar(Wire.REPLY);
@@ -169,7 +169,7 @@ class LentReadingTest {
     sendFromFar(Wire.REPLY);
     Thread caller = Thread.currentThread();
     try {
-      link.readFor(h.reply, in(WAIT));
+      link.reader.readFor(h.reply, in(WAIT));
       link.role.giveBack(!h.reply.isDone());
       assertEquals(8, h.reply.get(WAIT.toMillis(), TimeUnit.MILLISECONDS).length, "the reply");
       Thread server = h.callServers.poll(WAIT.toMillis(), TimeUnit.MILLISECONDS);
@@ -187,7 +187,7 @@ class LentReadingTest {
     borrow(link);
     h.answerPings = frameOf(Wire.PING);
     Future<?> caller = workers.submit(() -> {
-      link.readFor(h.reply, in(WAIT));
+      link.reader.readFor(h.reply, in(WAIT));
       link.role.giveBack(!h.reply.isDone());
     });
     Deadline.await(WAIT, link.role::isCallerReading, "the caller to read");
@@ -213,7 +213,7 @@ class LentReadingTest {
     Link link = started(h);
     borrow(link);
     Future<?> caller = workers.submit(() -> {
-      link.readFor(h.reply, in(Duration.ofMinutes(2))); // its reply never comes
+      link.reader.readFor(h.reply, in(Duration.ofMinutes(2))); // its reply never comes
       link.role.giveBack(!h.reply.isDone());
     });
     Deadline.await(WAIT, link.role::isCallerReading, "the caller to read");
@@ -235,7 +235,7 @@ class LentReadingTest {
     far[0].getOutputStream().write(reply, 0, half); // the peer stalls within the frame
     far[0].getOutputStream().flush();
     Future<?> caller = workers.submit(() -> {
-      link.readFor(h.reply, in(Duration.ofMillis(50)));
+      link.reader.readFor(h.reply, in(Duration.ofMillis(50)));
       link.role.giveBack(!h.reply.isDone());
     });
     caller.get(WAIT.toMillis(), TimeUnit.MILLISECONDS); // its time ran out: it did not block
@@ -254,7 +254,7 @@ class LentReadingTest {
     far[0].close();
     // The caller cannot tell an end from silence without blocking; its wait is short, and the
     // link's thread, reading again, finds the end.
-    link.readFor(h.reply, in(Duration.ofMillis(1)));
+    link.reader.readFor(h.reply, in(Duration.ofMillis(1)));
     link.role.giveBack(!h.reply.isDone());
     Deadline.await(WAIT, link::isClosed, "the link to close");
     assertEndedOnce(link, h, "connection closed by lentpeer");
