@@ -65,6 +65,23 @@ class HandshakeTest {
   }
 
   @Test
+  void aHelloThatAnnouncesAFrameLimitAndEndsBeforeItIsRefusedAsMalformed() throws Exception {
+    Handshake sender = declaring("cut", 0);
+    byte[] hello = sender.hello(new byte[32]);
+    hello[hello.length - 1] |= 4; // the limit's flag, without the limit
+    try (ServerSocket server = new ServerSocket(0, 1, InetAddress.getLoopbackAddress());
+        Socket out = new Socket(InetAddress.getLoopbackAddress(), server.getLocalPort());
+        Socket in = server.accept()) {
+      in.setSoTimeout(10_000);
+      Handshake.writeFrame(new java.io.DataOutputStream(out.getOutputStream()), Wire.HELLO, hello);
+      Handshake.Failure failure = assertThrows(Handshake.Failure.class,
+          () -> declaring("fine", 65_536).run(in.getInputStream(), in.getOutputStream(), false));
+      assertEquals(Wire.REFUSE_MALFORMED, failure.reason);
+      assertTrue(failure.getMessage().startsWith("malformed HELLO"), failure.getMessage());
+    }
+  }
+
+  @Test
   void fieldsLongerThanAHelloHoldsAreRefusedWhenTheContainerIsBuilt() {
     // 100 characters of 3 bytes each: 300 bytes of UTF-8, more than a str8 holds.
     String name = "\u2603".repeat(100);
