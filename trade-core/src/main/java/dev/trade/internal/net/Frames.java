@@ -35,6 +35,48 @@ final class Frames {
     return sink.size() == sink.array().length ? sink.array() : sink.toByteArray();
   }
 
+  /** Where a CALL frame (header included) holds its timeout, after routing and the two ids. */
+  private static final int CALL_TIMEOUT = Wire.HEADER + ROUTING + 16;
+
+  /** Whether a complete frame (header included) is a CALL. */
+  static boolean isCall(byte[] frame) {
+    return frame.length >= CALL_TIMEOUT + 4 && frame[5] == Wire.CALL;
+  }
+
+  /**
+   * While a CALL waits to be written, its timeout field holds when it is due instead: {@code now}
+   * plus the timeout, in ms of a clock of this container's own (see {@link #unstampDue}).
+   */
+  static void stampDue(byte[] call, int nowMs) {
+    putInt(call, CALL_TIMEOUT, nowMs + getInt(call, CALL_TIMEOUT));
+  }
+
+  /**
+   * As a CALL is written: puts the time left until it is due back in its timeout field, so that
+   * the next container counts from when it arrives there; false, leaving the frame as it is, when
+   * none is left: its caller has given up on it.
+   */
+  static boolean unstampDue(byte[] call, int nowMs) {
+    int left = getInt(call, CALL_TIMEOUT) - nowMs; // wraps around with the clock
+    if (left <= 0) {
+      return false;
+    }
+    putInt(call, CALL_TIMEOUT, left);
+    return true;
+  }
+
+  private static int getInt(byte[] b, int at) {
+    return (b[at] & 0xff) << 24 | (b[at + 1] & 0xff) << 16 | (b[at + 2] & 0xff) << 8
+        | (b[at + 3] & 0xff);
+  }
+
+  private static void putInt(byte[] b, int at, int v) {
+    b[at] = (byte) (v >>> 24);
+    b[at + 1] = (byte) (v >>> 16);
+    b[at + 2] = (byte) (v >>> 8);
+    b[at + 3] = (byte) v;
+  }
+
   /** Whether a complete frame (header included) keeps within {@code limit} (MAXFRAMESIZE). */
   static boolean fits(byte[] frame, int limit) {
     return frame.length - 4 <= limit;

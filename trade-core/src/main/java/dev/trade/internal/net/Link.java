@@ -129,6 +129,17 @@ final class Link {
    */
   void send(byte[] frame) throws IOException {
     queue(frame);
+    sendQueued();
+  }
+
+  /** As {@link #send}, for a CALL another container made ({@link LinkOutput#offerPassedOn}). */
+  void passOn(byte[] call) throws IOException {
+    checkOpen();
+    output.offerPassedOn(call);
+    sendQueued();
+  }
+
+  private void sendQueued() throws IOException {
     if (!output.leftForBurst()) {
       writeQueued();
     }
@@ -142,10 +153,14 @@ final class Link {
    * @throws IOException when the link is closed
    */
   void queue(byte[] frame) throws IOException {
+    checkOpen();
+    output.offer(frame);
+  }
+
+  private void checkOpen() throws IOException {
     if (isClosed()) {
       throw new IOException("link to " + peerName + " is closed");
     }
-    output.offer(frame);
   }
 
   /** Writes what {@link #queue} queued, unless another thread is writing: that one writes it. */

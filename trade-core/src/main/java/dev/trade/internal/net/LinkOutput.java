@@ -3,6 +3,8 @@ package dev.trade.internal.net;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.util.Queue;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -23,8 +25,8 @@ import java.util.function.Predicate;
  *
  * <p>A slow peer is not a dead one: the bytes go out in pieces, each timed ({@link #writingSince}).
  * Its queue is bounded for calls ({@link #ROOM}), and on it the calls nobody waits for any more
- * are left out ({@link #CONGESTED}); a caller or the control thread that finds itself writing for
- * others on it stops after {@link #BUDGET} ({@link #write(boolean)}).
+ * are left out ({@link #CONGESTED}, {@link #offerPassedOn}); a caller or the control thread that
+ * finds itself writing for others on it stops after {@link #BUDGET} ({@link #write(boolean)}).
  *
  * <p>Safe for concurrent use.
  */
@@ -54,6 +56,8 @@ final class LinkOutput {
   private final AtomicLong queued = new AtomicLong();
   private final long room;
   private final Predicate<byte[]> abandoned;
+  /** CALLs passed on for other containers, stamped with when they are due (offerPassedOn). */
+  private final Set<byte[]> passedOn = ConcurrentHashMap.newKeySet();
   /** Senders in {@link #awaitRoom}, waiting on this. */
   private final Object roomLock = new Object();
   private volatile int roomWaiters;
@@ -98,6 +102,24 @@ final class LinkOutput {
   void offer(byte[] frame) {
     queued.addAndGet(frame.length);
     queue.offer(frame);
+  }
+
+  /**
+   * Queues a CALL that another container made, passing it on: stamped with when it is due
+   * ({@link Frames#stampDue}), from its arrival here. The writer leaves it out once its time is up
+   * (its caller has given up) and else tells the next container the time then left. Not for the
+   * calls made here: their callers' deadlines say when they are given up ({@link #abandoned}),
+   * and a clock read per call cost a few per cent with many callers.
+   */
+  void offerPassedOn(byte[] call) {
+    Frames.stampDue(call, nowMillis());
+    passedOn.add(call);
+    offer(call);
+  }
+
+  /** A clock in ms for {@link Frames#stampDue}: nanoTime's, cut to 32 bits (it wraps around). */
+  private static int nowMillis() {
+    return (int) Math.floorDiv(System.nanoTime(), 1_000_000L);
   }
 
   /** Whether the frames waiting to be written come to less than the room: a call may queue. */
@@ -221,8 +243,12 @@ final class LinkOutput {
         long done = 0; // bytes of whole frames handed to the stream, still counted as queued
         byte[] next;
         while (!(budgeted && over) && (next = queue.poll()) != null) {
-          if (queued.get() >= CONGESTED && abandoned.test(next)) {
+          boolean left = !passedOn.isEmpty() && passedOn.remove(next)
+              ? !Frames.unstampDue(next, nowMillis())
+              : queued.get() >= CONGESTED && abandoned.test(next);
+          if (left) {
             done += next.length; // a call whose caller went on without it: left out
+            untimed += next.length; // and soon off the count
             continue;
           }
           // Sealing here, in write order, keeps the cipher's frame counter in step with the wire.
@@ -252,6 +278,7 @@ final class LinkOutput {
         written.run();
       } catch (IOException e) {
         queue.clear();
+        passedOn.clear();
         queued.set(0);
         wakeRoomWaiters();
         throw e;

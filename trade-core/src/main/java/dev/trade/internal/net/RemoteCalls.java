@@ -299,7 +299,7 @@ final class RemoteCalls {
       return;
     }
     try {
-      next.send(frame);
+      next.passOn(frame);
     } catch (IOException e) {
       if (type == Wire.CALL) {
         replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer:"

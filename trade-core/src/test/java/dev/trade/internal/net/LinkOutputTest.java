@@ -207,4 +207,47 @@ class LinkOutputTest {
     assertEquals(0, output.queuedBytes());
     assertTrue(output.drained());
   }
+
+  /** A CALL frame with this timeout, as {@link RemoteCalls} makes one (no arguments). */
+  private static byte[] call(int timeoutMs) {
+    var out = Frames.start(Wire.CALL, 64);
+    Frames.writeRouting(out, new java.util.UUID(1, 2), new java.util.UUID(3, 4), Wire.MAX_HOPS);
+    out.writeLong(7); // request id
+    out.writeLong(1); // service id
+    out.writeInt(timeoutMs);
+    out.writeVarUInt(0);
+    return Frames.finish(out);
+  }
+
+  private static int timeoutOf(byte[] frame) {
+    return java.nio.ByteBuffer.wrap(frame).getInt(Wire.HEADER + Frames.ROUTING + 16);
+  }
+
+  @Test
+  void aCallPassedOnWhoseTimeRanOutWhileItWaitedIsLeftOutAndTheOthersCarryWhatTimeIsLeft()
+      throws Exception {
+    List<byte[]> written = new ArrayList<>();
+    Recording socket = new Recording() {
+      @Override
+      public void write(byte[] b, int off, int len) {
+        super.write(b, off, len);
+        written.add(java.util.Arrays.copyOfRange(b, off, off + len));
+      }
+    };
+    LinkOutput output = new LinkOutput(socket, null, () -> { });
+    socket.output = output;
+    output.offerPassedOn(call(1));
+    output.offerPassedOn(call(60_000));
+    output.offerPassedOn(call(1));
+    long offered = System.nanoTime();
+    Deadline.await(java.time.Duration.ofSeconds(5),
+        () -> System.nanoTime() - offered > TimeUnit.MILLISECONDS.toNanos(5), "5 ms to pass");
+    output.write();
+
+    assertEquals(1, written.size(), "the two calls whose time was up were left out");
+    int left = timeoutOf(written.get(0));
+    assertTrue(left > 59_000 && left < 60_000, "the time left, not the time given: " + left);
+    assertEquals(0, output.queuedBytes());
+    assertTrue(output.drained());
+  }
 }
