@@ -170,9 +170,12 @@ final class Link {
 
   /**
    * Ends a burst and writes what was sent during it (whoever reads, when nothing whole is left to
-   * hand out). Guarded like a served call: should the peer not read (its reader busy writing to
-   * us), the watch hands reading on after a tick, so two links that write to each other cannot
-   * wait for each other for ever. Returns true if this thread still reads the link.
+   * hand out: before the link's thread blocks in a read, or while a caller waits on). Guarded
+   * like a served call: should the peer not read (its reader busy writing to us), the watch hands
+   * reading to another thread after a tick, so two links that write to each other cannot wait for
+   * each other for ever.
+   *
+   * @return true if this thread still reads the link
    */
   boolean endBurst() {
     if (!output.endBurst()) {
