@@ -243,7 +243,7 @@ final class RemoteCalls {
    */
   boolean abandoned(byte[] frame) {
     int at = Wire.HEADER;
-    return frame[5] == Wire.CALL && frame.length >= at + Frames.ROUTING + 8
+    return Frames.isCall(frame)
         && Frames.getLong(frame, at) == self.getMostSignificantBits()
         && Frames.getLong(frame, at + 8) == self.getLeastSignificantBits()
         && !pending.containsKey(Frames.getLong(frame, at + Frames.ROUTING));
