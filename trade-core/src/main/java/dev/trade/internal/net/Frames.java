@@ -3,6 +3,9 @@ package dev.trade.internal.net;
 import dev.trade.internal.codec.ByteSink;
 import dev.trade.internal.codec.ByteSource;
 import dev.trade.internal.codec.MalformedValueException;
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
+import java.nio.ByteOrder;
 import java.util.UUID;
 
 /**
@@ -13,6 +16,10 @@ import java.util.UUID;
 final class Frames {
   /** Routing header: source (16), destination (16), hops left (1). */
   static final int ROUTING = 33;
+  private static final VarHandle INTS =
+      MethodHandles.byteArrayViewVarHandle(int[].class, ByteOrder.BIG_ENDIAN);
+  private static final VarHandle LONGS =
+      MethodHandles.byteArrayViewVarHandle(long[].class, ByteOrder.BIG_ENDIAN);
 
   private Frames() {}
 
@@ -48,7 +55,7 @@ final class Frames {
    * plus the timeout, in ms of a clock of this container's own (see {@link #unstampDue}).
    */
   static void stampDue(byte[] call, int nowMs) {
-    putInt(call, CALL_TIMEOUT, nowMs + getInt(call, CALL_TIMEOUT));
+    INTS.set(call, CALL_TIMEOUT, nowMs + (int) INTS.get(call, CALL_TIMEOUT));
   }
 
   /**
@@ -57,24 +64,12 @@ final class Frames {
    * none is left: its caller has given up on it.
    */
   static boolean unstampDue(byte[] call, int nowMs) {
-    int left = getInt(call, CALL_TIMEOUT) - nowMs; // wraps around with the clock
+    int left = (int) INTS.get(call, CALL_TIMEOUT) - nowMs; // wraps around with the clock
     if (left <= 0) {
       return false;
     }
-    putInt(call, CALL_TIMEOUT, left);
+    INTS.set(call, CALL_TIMEOUT, left);
     return true;
-  }
-
-  private static int getInt(byte[] b, int at) {
-    return (b[at] & 0xff) << 24 | (b[at + 1] & 0xff) << 16 | (b[at + 2] & 0xff) << 8
-        | (b[at + 3] & 0xff);
-  }
-
-  private static void putInt(byte[] b, int at, int v) {
-    b[at] = (byte) (v >>> 24);
-    b[at + 1] = (byte) (v >>> 16);
-    b[at + 2] = (byte) (v >>> 8);
-    b[at + 3] = (byte) v;
   }
 
   /** Whether a complete frame (header included) keeps within {@code limit} (MAXFRAMESIZE). */
@@ -118,11 +113,7 @@ final class Frames {
   /** A frame of {@code type} carrying {@code payload} with one hop fewer left. */
   static byte[] forwarded(int type, byte[] payload) {
     byte[] frame = new byte[Wire.HEADER + payload.length];
-    int length = frame.length - 4;
-    frame[0] = (byte) (length >>> 24);
-    frame[1] = (byte) (length >>> 16);
-    frame[2] = (byte) (length >>> 8);
-    frame[3] = (byte) length;
+    INTS.set(frame, 0, frame.length - 4);
     frame[4] = (byte) Wire.VERSION;
     frame[5] = (byte) type;
     System.arraycopy(payload, 0, frame, Wire.HEADER, payload.length);
@@ -132,10 +123,6 @@ final class Frames {
 
   /** The big-endian {@code long} at {@code at}. */
   static long getLong(byte[] b, int at) {
-    long v = 0;
-    for (int i = 0; i < 8; i++) {
-      v = (v << 8) | (b[at + i] & 0xff);
-    }
-    return v;
+    return (long) LONGS.get(b, at);
   }
 }
