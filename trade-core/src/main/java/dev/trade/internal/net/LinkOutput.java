@@ -98,7 +98,7 @@ final class LinkOutput {
     this.abandoned = abandoned;
   }
 
-  /** Queues a complete frame (header included) for the next {@link #write}. */
+  /** Queues a complete frame (header included) for the next {@link #write(boolean)}. */
   void offer(byte[] frame) {
     queued.addAndGet(frame.length);
     queue.offer(frame);
@@ -204,7 +204,7 @@ final class LinkOutput {
   /**
    * Ends a burst (reader, before it may block in a read).
    *
-   * @return whether frames were left for it: then it must {@link #write}
+   * @return whether frames were left for it: then it must {@link #write(boolean)}
    */
   boolean endBurst() {
     burst = false; // before looking at deferred: a sender that saw burst true set it before this
@@ -217,17 +217,9 @@ final class LinkOutput {
 
   /**
    * Writes and flushes every queued frame, unless another thread is writing: that one writes them.
-   *
-   * @throws IOException if a write failed; what was queued is dropped (the link is to close)
-   */
-  void write() throws IOException {
-    write(false);
-  }
-
-  /**
-   * As {@link #write()}; {@code budgeted}: this thread has work of its own (a caller, the control
-   * thread, a link's reader) and stops, between frames, once it has written for {@link #BUDGET}
-   * while others keep queueing. Else a slow link kept busy would hold it writing for everyone as
+   * {@code budgeted}: this thread has work of its own (a caller, the control thread, a link's
+   * reader) and stops, between frames, once it has written for {@link #BUDGET} while others keep
+   * queueing. Else a slow link kept busy would hold it writing for everyone as
    * long as that lasts, a caller far past its deadline.
    *
    * @return true if it stopped so with frames left: the caller must see them written elsewhere

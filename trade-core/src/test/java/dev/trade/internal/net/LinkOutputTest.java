@@ -40,7 +40,7 @@ class LinkOutputTest {
     LinkOutput output = new LinkOutput(socket, null, () -> { });
     socket.output = output;
     output.offer(new byte[3 * LinkOutput.PIECE + 100]);
-    output.write();
+    output.write(false);
 
     assertEquals(List.of(LinkOutput.PIECE, LinkOutput.PIECE, LinkOutput.PIECE, 100), socket.lengths);
     for (int i = 1; i < socket.stamps.size(); i++) {
@@ -60,7 +60,7 @@ class LinkOutputTest {
     for (int i = 0; i < frames; i++) {
       output.offer(new byte[100]);
     }
-    output.write();
+    output.write(false);
 
     assertEquals(frames, socket.lengths.size());
     long distinct = socket.stamps.stream().distinct().count();
@@ -99,7 +99,7 @@ class LinkOutputTest {
     output.offer(new byte[600]);
     CompletableFuture<Void> writer = CompletableFuture.runAsync(() -> {
       try {
-        output.write();
+        output.write(false);
       } catch (IOException e) {
         throw new IllegalStateException(e);
       }
@@ -132,7 +132,7 @@ class LinkOutputTest {
     output.offer(new byte[600]);
     CompletableFuture.runAsync(() -> {
       try {
-        output.write();
+        output.write(false);
       } catch (IOException e) {
         // the test ends the write
       }
@@ -200,7 +200,7 @@ class LinkOutputTest {
       }
       output.offer(frame);
     }
-    output.write();
+    output.write(false);
     // Left out while at least CONGESTED bytes waited (the first half of the frames); the rest go.
     int leftOut = frames - socket.lengths.size();
     assertTrue(leftOut >= frames / 4 - 1 && leftOut <= frames / 2, leftOut + " of " + frames);
@@ -242,7 +242,7 @@ class LinkOutputTest {
     long offered = System.nanoTime();
     Deadline.await(java.time.Duration.ofSeconds(5),
         () -> System.nanoTime() - offered > TimeUnit.MILLISECONDS.toNanos(5), "5 ms to pass");
-    output.write();
+    output.write(false);
 
     assertEquals(1, written.size(), "the two calls whose time was up were left out");
     int left = timeoutOf(written.get(0));
