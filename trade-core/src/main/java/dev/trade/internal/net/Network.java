@@ -250,10 +250,13 @@ public final class Network implements AutoCloseable {
           link.close("duplicate link");
           return;
         }
-        links.remove(peer.containerId());
-        existing.close("duplicate link");
       }
-      links.put(peer.containerId(), link);
+      // Replaced in one step, then closed: a caller looking up its next hop meanwhile finds one of
+      // the two links, never none (no link fails its call at once as "not reachable").
+      Link replaced = links.put(peer.containerId(), link);
+      if (replaced != null) {
+        replaced.close("duplicate link");
+      }
       // DEBUG, as is an orderly close: at INFO, 100 containers in one JVM spent seconds of their
       // control threads queued for the logging handler's lock (docs/configuration.md, Logging).
       LOG.log(Level.DEBUG, "{0}: linked to {1} ({2})", name, peer.name(), socket.getRemoteSocketAddress());

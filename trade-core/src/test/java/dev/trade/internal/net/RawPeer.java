@@ -21,27 +21,37 @@ import java.util.UUID;
  */
 final class RawPeer implements AutoCloseable {
   final Socket socket;
-  final UUID id = UUID.randomUUID();
+  final UUID id;
   private final InputStream in;
   private final OutputStream out;
 
-  private RawPeer(Socket socket) throws IOException {
+  private RawPeer(Socket socket, UUID id) throws IOException {
     this.socket = socket;
+    this.id = id;
     this.in = socket.getInputStream();
     this.out = socket.getOutputStream();
   }
 
   /** Connects to the first address {@code container} listens on. */
   static RawPeer connect(TRADEContainer container) throws IOException {
+    return connect(container, UUID.randomUUID());
+  }
+
+  /** Connects to the first address {@code container} listens on, to pose as container {@code id}. */
+  static RawPeer connect(TRADEContainer container, UUID id) throws IOException {
     String[] at = container.getServerAddresses().get(0).split("@");
-    return connect(new InetSocketAddress(at[0], Integer.parseInt(at[1])));
+    return connect(new InetSocketAddress(at[0], Integer.parseInt(at[1])), id);
   }
 
   static RawPeer connect(InetSocketAddress address) throws IOException {
+    return connect(address, UUID.randomUUID());
+  }
+
+  private static RawPeer connect(InetSocketAddress address, UUID id) throws IOException {
     Socket s = new Socket();
     s.connect(address, 5_000);
     s.setTcpNoDelay(true);
-    return new RawPeer(s);
+    return new RawPeer(s, id);
   }
 
   /** Authenticates as container {@link #id} named {@code name}; returns who answered. */
