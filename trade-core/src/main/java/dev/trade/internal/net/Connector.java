@@ -14,6 +14,7 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.Map;
+import java.util.UUID;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ExecutorService;
@@ -51,6 +52,15 @@ final class Connector {
 
     /** Whether a live link to the container last reached at this address exists. */
     boolean isLinked(InetSocketAddress address);
+
+    /**
+     * A handshake with the container {@code peer} says it is has begun: its HELLO came, and this
+     * side's AUTH is sent after this returns. Not proved until the handshake ends.
+     */
+    void handshakeBegun(UUID peer);
+
+    /** A handshake {@link #handshakeBegun} told of ended, linked (after {@link #linked}) or not. */
+    void handshakeEnded(UUID peer);
   }
 
   private final Handshake handshake;
@@ -61,6 +71,7 @@ final class Connector {
   private final Sink sink;
   private final List<ServerSocket> servers = new CopyOnWriteArrayList<>();
   private final Map<InetSocketAddress, Long> backoff = new ConcurrentHashMap<>();
+
   /** Per kept address, the number of its one live retry chain; older chains end at their next step. */
   private final Map<InetSocketAddress, AtomicLong> chains = new ConcurrentHashMap<>();
   private volatile boolean closed;
@@ -273,9 +284,24 @@ final class Connector {
     } catch (RejectedExecutionException e) {
       throw new IOException("container closing");
     }
+    UUID[] heard = new UUID[1];
+    try {
+      handOver(socket, initiatedHere, settled, deadline, heard);
+    } finally {
+      if (heard[0] != null) {
+        sink.handshakeEnded(heard[0]);
+      }
+    }
+  }
+
+  private void handOver(Socket socket, boolean initiatedHere, AtomicBoolean settled,
+      ScheduledFuture<?> deadline, UUID[] heard) throws IOException, Handshake.Failure {
     Handshake.Peer peer;
     try {
-      peer = handshake.run(socket.getInputStream(), socket.getOutputStream(), initiatedHere);
+      peer = handshake.run(socket.getInputStream(), socket.getOutputStream(), initiatedHere, id -> {
+        heard[0] = id;
+        sink.handshakeBegun(id);
+      });
     } catch (Handshake.Failure e) {
       LOG.log(Level.WARNING, "handshake with {0} failed: {1}", socket.getRemoteSocketAddress(),
           e.getMessage());

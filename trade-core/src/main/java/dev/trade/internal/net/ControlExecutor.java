@@ -4,6 +4,7 @@ import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.ThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
 
 /**
  * The network's control thread: runs state changes one at a time, in order, and after a burst of
@@ -27,5 +28,15 @@ final class ControlExecutor extends ThreadPoolExecutor {
       sinceLast = 0;
       afterBurst.run();
     }
+  }
+
+  /** Daemon threads named {@code prefix-1}, {@code prefix-2}, …: containers never keep a JVM up. */
+  static ThreadFactory daemon(String prefix) {
+    AtomicInteger n = new AtomicInteger();
+    return r -> {
+      Thread t = new Thread(r, prefix + "-" + n.incrementAndGet());
+      t.setDaemon(true);
+      return t;
+    };
   }
 }

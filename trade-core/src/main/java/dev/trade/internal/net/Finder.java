@@ -326,7 +326,7 @@ final class Finder implements AutoCloseable {
    * "left" and "joined").
    */
   static boolean dialsAtOnce(UUID self, UUID peer, Collection<UUID> known) {
-    if (Network.compareIds(self, peer) < 0) {
+    if (LinkSwaps.compareIds(self, peer) < 0) {
       return true;
     }
     Set<UUID> members = new HashSet<>(known);

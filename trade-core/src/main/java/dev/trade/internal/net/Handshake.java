@@ -15,6 +15,8 @@ import java.security.SecureRandom;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.UUID;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
 import javax.crypto.Mac;
 import javax.crypto.spec.SecretKeySpec;
 
@@ -31,7 +33,7 @@ import javax.crypto.spec.SecretKeySpec;
  * Opened by that party, both connections have two accepting containers, and an accepting side's
  * proof never passes for an opening side's.
  *
- * <p>Stateless apart from the identity given at construction; thread-safe.
+ * <p>Holds the identity given at construction and a count of the connections it opened; thread-safe.
  */
 final class Handshake {
   private static final byte[] MAGIC = {'T', 'R', 'D', 'E'};
@@ -39,6 +41,8 @@ final class Handshake {
   private static final int MAX_STRING = 255;
   private static final int MAX_ADDRESSES = 16;
   private static final SecureRandom RANDOM = new SecureRandom();
+  /** Dial numbers of the connections this side opens: 1, 2, … (see {@link Peer#dial}). */
+  private final AtomicLong dials = new AtomicLong();
 
   /**
    * Who we are, as told to peers; {@code maxFrame} is our MAXFRAMESIZE, or 0 to leave it out of
@@ -55,12 +59,15 @@ final class Handshake {
   /**
    * Who the peer proved to be, the link's frame cipher when frames are encrypted (else null),
    * whether both sides said they exchange DIGEST when the link comes up, and the largest frame the
-   * peer said it accepts (its MAXFRAMESIZE; 0 if it did not say).
+   * peer said it accepts (its MAXFRAMESIZE; 0 if it did not say), and the connection's dial
+   * number: the opening side numbers the connections it opens 1, 2, … in the order it dials them
+   * and says the number in its HELLO, so both ends know which of two links it dialled later (0 when
+   * the opening side did not say).
    */
   record Peer(UUID containerId, String name, String host, List<String> addresses, FrameCipher cipher,
-      boolean digests, int maxFrame) {
+      boolean digests, int maxFrame, long dial) {
     Peer(UUID containerId, String name, String host, List<String> addresses, FrameCipher cipher) {
-      this(containerId, name, host, addresses, cipher, false, 0);
+      this(containerId, name, host, addresses, cipher, false, 0, 0);
     }
   }
 
@@ -73,6 +80,8 @@ final class Handshake {
   private static final int FLAG_DIGEST = 2;
   /** HELLO flag: a u32 follows the flags, the largest frame this side accepts (MAXFRAMESIZE). */
   private static final int FLAG_FRAME_LIMIT = 4;
+  /** HELLO flag: a u64 follows (after the frame limit, if any), the opening side's dial number. */
+  private static final int FLAG_DIAL = 8;
 
   /** The handshake failed; {@code reason} is one of the {@code Wire.REFUSE_*} codes or 0 (I/O). */
   static final class Failure extends Exception {
@@ -117,11 +126,37 @@ final class Handshake {
    * @throws IOException when the connection fails or the peer refused us
    */
   Peer run(InputStream rawIn, OutputStream rawOut, boolean opened) throws IOException, Failure {
+    return run(rawIn, rawOut, opened, id -> { });
+  }
+
+  /**
+   * Runs the handshake as {@link #run(InputStream, OutputStream, boolean)} does.
+   *
+   * @param heard told the peer's container id once its HELLO checked out, before this side's AUTH
+   *     is sent: the peer cannot have finished its side of the handshake before
+   */
+  Peer run(InputStream rawIn, OutputStream rawOut, boolean opened, Consumer<UUID> heard)
+      throws IOException, Failure {
+    return run(rawIn, rawOut, opened ? dials.incrementAndGet() : 0, heard);
+  }
+
+  /**
+   * Runs the handshake with a given dial number (tests that dial out of order).
+   *
+   * @param dial this connection's dial number if this side opened it (positive), else 0
+   */
+  Peer run(InputStream rawIn, OutputStream rawOut, long dial) throws IOException, Failure {
+    return run(rawIn, rawOut, dial, id -> { });
+  }
+
+  private Peer run(InputStream rawIn, OutputStream rawOut, long dial, Consumer<UUID> heard)
+      throws IOException, Failure {
+    boolean opened = dial > 0;
     DataInputStream in = new DataInputStream(rawIn);
     DataOutputStream out = new DataOutputStream(rawOut);
     byte[] nonce = new byte[NONCE];
     RANDOM.nextBytes(nonce);
-    writeFrame(out, Wire.HELLO, hello(nonce));
+    writeFrame(out, Wire.HELLO, hello(nonce, dial));
 
     ByteBuffer hello = readFrame(in, Wire.HELLO);
     Peer peer;
@@ -160,8 +195,9 @@ final class Handshake {
               peerMaxFrame) + " below " + Wire.MIN_FRAME_LIMIT);
         }
       }
+      long peerDial = (peerFlags & FLAG_DIAL) != 0 ? hello.getLong() : 0;
       peer = new Peer(id, name, host, addresses, null,
-          self.digests() && (peerFlags & FLAG_DIGEST) != 0, peerMaxFrame);
+          self.digests() && (peerFlags & FLAG_DIGEST) != 0, peerMaxFrame, opened ? dial : peerDial);
     } catch (RuntimeException e) { // BufferUnderflow, bad UTF-8 length...
       throw refuse(out, Wire.REFUSE_MALFORMED, "malformed HELLO: " + e);
     }
@@ -177,6 +213,7 @@ final class Handshake {
       throw refuse(out, Wire.REFUSE_ENCRYPTION, "USEENCRYPTION differs: " + self.encrypt()
           + " here, " + peerEncrypts + " at " + peer.name());
     }
+    heard.accept(peer.containerId());
     byte role = opened ? OPENED : ACCEPTED;
     byte peerRole = opened ? ACCEPTED : OPENED;
     writeFrame(out, Wire.AUTH, mac(role, nonce, peerNonce, self.containerId(), peer.containerId()));
@@ -192,11 +229,11 @@ final class Handshake {
     }
     return new Peer(peer.containerId(), peer.name(), peer.host(), peer.addresses(),
         new FrameCipher(key, self.containerId(), peer.containerId(), nonce, peerNonce), peer.digests(),
-        peer.maxFrame());
+        peer.maxFrame(), peer.dial());
   }
 
-  /** The HELLO payload with this nonce. */
-  byte[] hello(byte[] nonce) throws IOException {
+  /** The HELLO payload with this nonce, and this dial number if positive (see {@link Peer#dial}). */
+  byte[] hello(byte[] nonce, long dial) throws IOException {
     ByteArrayOutputStream bytes = new ByteArrayOutputStream(256);
     DataOutputStream out = new DataOutputStream(bytes);
     out.write(MAGIC);
@@ -214,9 +251,12 @@ final class Handshake {
     out.write(nonce);
     boolean limit = self.maxFrame() > 0;
     out.writeByte((self.encrypt() ? FLAG_ENCRYPT : 0) | (self.digests() ? FLAG_DIGEST : 0)
-        | (limit ? FLAG_FRAME_LIMIT : 0));
+        | (limit ? FLAG_FRAME_LIMIT : 0) | (dial > 0 ? FLAG_DIAL : 0));
     if (limit) {
       out.writeInt(self.maxFrame());
+    }
+    if (dial > 0) {
+      out.writeLong(dial);
     }
     return bytes.toByteArray();
   }

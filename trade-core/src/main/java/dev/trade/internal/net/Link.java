@@ -30,6 +30,8 @@ final class Link {
   final String peerKey;
   final String peerName;
   final boolean initiatedHere;
+  /** The number its opening side gave this connection, 0 if unknown (see {@link Handshake.Peer#dial}). */
+  final long dial;
   /** Whether both sides exchange DIGEST, not their full state, when the link comes up. */
   final boolean digests;
   /**
@@ -76,6 +78,7 @@ final class Link {
     this.peerKey = peerId.toString();
     this.peerName = peer.name();
     this.initiatedHere = initiatedHere;
+    this.dial = peer.dial();
     this.digests = peer.digests();
     this.sendLimit = peer.maxFrame() > 0 ? Math.min(maxFrame, peer.maxFrame()) : maxFrame;
     FrameCipher cipher = peer.cipher();

@@ -1,5 +1,7 @@
 package dev.trade.internal.net;
 
+import static dev.trade.internal.net.ControlExecutor.daemon;
+
 import dev.trade.TRADEException;
 import dev.trade.internal.call.Invocation;
 import dev.trade.internal.codec.Codec;
@@ -25,10 +27,8 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Executors;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
-import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
-import java.util.concurrent.atomic.AtomicInteger;
 
 /**
  * A container's networking: links to neighbours, replication of service tables and link states,
@@ -61,6 +61,7 @@ public final class Network implements AutoCloseable {
   private final ReadWatch readWatch;
   private final Dispatch dispatch;
   private final DiscoverySwitches discovery;
+  private final LinkSwaps swaps;
   private final Map<UUID, Link> links = new ConcurrentHashMap<>();
   /**
    * Every link whose reader runs, registered in {@link #links} or not yet: heartbeats and the
@@ -92,17 +93,7 @@ public final class Network implements AutoCloseable {
         settings.maxFrameSize());
     this.replication = new Replication(self, registry, tableCodec, links, calls,
         settings.failureTimeout().plus(settings.heartbeatInterval()).toNanos(),
-        (task, delay) -> {
-          if (delay <= 0) {
-            onControl(task);
-            return;
-          }
-          try {
-            timer.schedule(() -> onControl(task), delay, TimeUnit.NANOSECONDS);
-          } catch (RejectedExecutionException closing) {
-            // Nothing left to refresh.
-          }
-        }, this::unreachable);
+        this::onControlAfter, this::unreachable);
     this.dispatch = new Dispatch(calls, replication, this,
         Dispatch.backlogLimit(settings.maxFrameSize()));
     if (settings.defaultCredentialsBeyondThisHost()) {
@@ -113,6 +104,7 @@ public final class Network implements AutoCloseable {
     Handshake handshake = new Handshake(new Handshake.Identity(settings.tradeSysId(), self, name,
         host, List.of(), settings.useEncryption(), true, settings.maxFrameSize()),
         settings.credentials());
+    this.swaps = new LinkSwaps(settings.clientSocketTimeout().toNanos());
     this.connector = new Connector(name, handshake, (int) settings.clientSocketTimeout().toMillis(),
         workers, timer, new Connector.Sink() {
           @Override
@@ -124,6 +116,20 @@ public final class Network implements AutoCloseable {
           public boolean isLinked(InetSocketAddress address) {
             UUID peer = dialled.get(address);
             return peer != null && links.containsKey(peer);
+          }
+
+          @Override
+          public void handshakeBegun(UUID peer) {
+            swaps.begun(peer);
+          }
+
+          @Override
+          public void handshakeEnded(UUID peer) {
+            // On the control thread, after the link's own task if it linked (queued before this).
+            onControl(() -> {
+              swaps.ended(peer);
+              settle(peer);
+            });
           }
         });
     this.discovery = new DiscoverySwitches(settings, self, name, connector, links::containsKey,
@@ -239,17 +245,13 @@ public final class Network implements AutoCloseable {
         link.close("container closing");
         return;
       }
-      Link existing = links.get(peer.containerId());
-      if (existing != null && !existing.isClosed()) {
-        // Two links to one container (both dialled at once): keep the one dialled by the container
-        // with the smaller id, as the other side decides the same.
-        UUID keptInitiator = compareIds(initiator(existing), initiator(link)) <= 0
-            ? initiator(existing) : initiator(link);
-        Link drop = initiator(link).equals(keptInitiator) ? existing : link;
-        if (drop == link) {
-          link.close("duplicate link");
-          return;
-        }
+      Link drop = LinkSwaps.toClose(links.get(peer.containerId()), link, self);
+      if (drop != null) {
+        LOG.log(Level.DEBUG, "{0}: closed a duplicate link to {1}", name, peer.name());
+      }
+      if (drop == link) {
+        link.close("duplicate link");
+        return;
       }
       // Replaced in one step, then closed: a caller looking up its next hop meanwhile finds one of
       // the two links, never none (no link fails its call at once as "not reachable").
@@ -294,40 +296,58 @@ public final class Network implements AutoCloseable {
     }
   }
 
+  /** Runs {@code task} on the control thread after {@code delayNanos}; nothing once closed. */
+  private void onControlAfter(Runnable task, long delayNanos) {
+    if (delayNanos <= 0) {
+      onControl(task);
+      return;
+    }
+    try {
+      timer.schedule(() -> onControl(task), delayNanos, TimeUnit.NANOSECONDS);
+    } catch (RejectedExecutionException closing) {
+      // Nothing left to do it for.
+    }
+  }
+
   private void flushQueued() {
     replication.flushQueued();
-  }
-
-  private UUID initiator(Link l) {
-    return l.initiatedHere ? self : l.peerId;
-  }
-
-  /**
-   * Orders container ids by their 16 bytes as unsigned numbers, the order of RFC 4122 and of other
-   * languages' UUID types. Not {@link UUID#compareTo}, which compares signed halves: containers
-   * written in another language would then keep a different one of two duplicate links.
-   */
-  static int compareIds(UUID a, UUID b) {
-    int c = Long.compareUnsigned(a.getMostSignificantBits(), b.getMostSignificantBits());
-    return c != 0 ? c : Long.compareUnsigned(a.getLeastSignificantBits(), b.getLeastSignificantBits());
   }
 
   /** A link's reader ended (its reading thread). */
   void linkClosed(Link link, String reason) {
     live.remove(link);
     onControl(() -> {
-      if (links.remove(link.peerId, link)) {
-        boolean orderly = closed || reason.equals(Dispatch.GOODBYE);
-        LOG.log(orderly ? Level.DEBUG : Level.INFO, "{0}: link to {1} closed: {2}", name,
-            link.peerName, reason);
-        calls.failVia(link.peerId, "the connection to " + link.peerName + " was lost ("
-            + reason + ")");
-        if (!closed) { // closing: no routes to follow, no one to dial again
-          replication.linkDown(link);
-          connector.retryNow();
-        }
+      if (!closed && links.get(link.peerId) == link
+          && swaps.hold(link, reason, System.nanoTime())) {
+        LOG.log(Level.DEBUG, "{0}: link to {1} closed ({2}); a handshake with it is under way,"
+            + " the loss waits for it", name, link.peerName, reason);
+        onControlAfter(() -> settle(link.peerId), swaps.holdNanos()); // its replacement may come
+        return;
       }
+      lost(link, reason);
     });
+  }
+
+  /** Takes a held loss of the link to {@code peer} now, if it is still held and due (LinkSwaps). */
+  private void settle(UUID peer) {
+    LinkSwaps.Held h = swaps.settle(peer, links.get(peer), System.nanoTime());
+    if (h != null) {
+      lost(h.link(), h.reason());
+    }
+  }
+
+  private void lost(Link link, String reason) {
+    if (links.remove(link.peerId, link)) {
+      boolean orderly = closed || reason.equals(Dispatch.GOODBYE);
+      LOG.log(orderly ? Level.DEBUG : Level.INFO, "{0}: link to {1} closed: {2}", name,
+          link.peerName, reason);
+      calls.failVia(link.peerId, "the connection to " + link.peerName + " was lost ("
+          + reason + ")");
+      if (!closed) { // closing: no routes to follow, no one to dial again
+        replication.linkDown(link);
+        connector.retryNow();
+      }
+    }
   }
 
   /**
@@ -377,14 +397,5 @@ public final class Network implements AutoCloseable {
     for (Link l : live) {
       l.close("container closed: the goodbye was not written within " + CLOSE_GRACE_MS + " ms");
     }
-  }
-
-  private static ThreadFactory daemon(String prefix) {
-    AtomicInteger n = new AtomicInteger();
-    return r -> {
-      Thread t = new Thread(r, prefix + "-" + n.incrementAndGet());
-      t.setDaemon(true);
-      return t;
-    };
   }
 }

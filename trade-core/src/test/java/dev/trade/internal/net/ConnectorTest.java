@@ -42,6 +42,16 @@ class ConnectorTest {
             attempts.incrementAndGet();
             return false;
           }
+
+          @Override
+          public void handshakeBegun(UUID peer) {
+            throw new AssertionError("nobody answers there");
+          }
+
+          @Override
+          public void handshakeEnded(UUID peer) {
+            throw new AssertionError("nobody answers there");
+          }
         });
     try {
       connector.keepConnected(nobody);

@@ -90,7 +90,7 @@ class FinderEarlyTest {
   /** The two containers after {@code self} on the ring of {@code all}. */
   private static Set<UUID> successors(UUID self, Set<UUID> all) {
     List<UUID> ring = new ArrayList<>(all);
-    ring.sort(Network::compareIds);
+    ring.sort(LinkSwaps::compareIds);
     int at = ring.indexOf(self);
     return Set.of(ring.get((at + 1) % ring.size()), ring.get((at + 2) % ring.size()));
   }

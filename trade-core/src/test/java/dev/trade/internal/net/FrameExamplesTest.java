@@ -126,7 +126,7 @@ class FrameExamplesTest {
 
   @Test
   void helloExample() throws Exception {
-    assertDocumented("hello", handshakeFrame(Wire.HELLO, armHandshake().hello(ARM_NONCE)));
+    assertDocumented("hello", handshakeFrame(Wire.HELLO, armHandshake().hello(ARM_NONCE, 0)));
   }
 
   @Test

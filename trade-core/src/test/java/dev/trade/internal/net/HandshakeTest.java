@@ -66,9 +66,18 @@ class HandshakeTest {
 
   @Test
   void aHelloThatAnnouncesAFrameLimitAndEndsBeforeItIsRefusedAsMalformed() throws Exception {
+    assertRefusedAsMalformedWithFlagAndNothingAfter(4);
+  }
+
+  @Test
+  void aHelloThatAnnouncesADialNumberAndEndsBeforeItIsRefusedAsMalformed() throws Exception {
+    assertRefusedAsMalformedWithFlagAndNothingAfter(8);
+  }
+
+  private static void assertRefusedAsMalformedWithFlagAndNothingAfter(int flag) throws Exception {
     Handshake sender = declaring("cut", 0);
-    byte[] hello = sender.hello(new byte[32]);
-    hello[hello.length - 1] |= 4; // the limit's flag, without the limit
+    byte[] hello = sender.hello(new byte[32], 0);
+    hello[hello.length - 1] |= flag; // the flag, without the field it announces
     try (ServerSocket server = new ServerSocket(0, 1, InetAddress.getLoopbackAddress());
         Socket out = new Socket(InetAddress.getLoopbackAddress(), server.getLocalPort());
         Socket in = server.accept()) {
@@ -79,6 +88,20 @@ class HandshakeTest {
       assertEquals(Wire.REFUSE_MALFORMED, failure.reason);
       assertTrue(failure.getMessage().startsWith("malformed HELLO"), failure.getMessage());
     }
+  }
+
+  @Test
+  void theOpeningSideNumbersItsDialsAndBothEndsLearnTheNumber() throws Exception {
+    Handshake dialler = declaring("dialler", 65_536);
+    for (long n = 1; n <= 3; n++) {
+      Handshake.Peer[] peers = shake(dialler, declaring("dialled", 65_536));
+      assertEquals(n, peers[0].dial(), "the number at the side that dialled");
+      assertEquals(n, peers[1].dial(), "the number at the side that was dialled");
+    }
+    // Dialled, it numbers nothing: the number is the other side's.
+    Handshake.Peer[] peers = shake(declaring("other", 65_536), dialler);
+    assertEquals(1, peers[0].dial());
+    assertEquals(1, peers[1].dial());
   }
 
   @Test

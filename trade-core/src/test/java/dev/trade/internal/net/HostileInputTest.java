@@ -322,7 +322,7 @@ class HostileInputTest {
   private static byte[] helloFrame() throws IOException {
     Handshake h = new Handshake(new Handshake.Identity("diarc", UUID.randomUUID(), "half", "localhost",
         List.of()), "diarcUser");
-    byte[] frame = RawPeer.frame(Wire.HELLO, h.hello(new byte[32]));
+    byte[] frame = RawPeer.frame(Wire.HELLO, h.hello(new byte[32], 0));
     assertArrayEquals(new byte[] {'T', 'R', 'D', 'E'}, Arrays.copyOfRange(frame, 6, 10));
     return frame;
   }

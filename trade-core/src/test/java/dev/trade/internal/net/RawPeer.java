@@ -57,12 +57,8 @@ final class RawPeer implements AutoCloseable {
   /** Authenticates as container {@link #id} named {@code name}; returns who answered. */
   Handshake.Peer handshake(String systemId, String credentials, String name)
       throws IOException, Handshake.Failure {
-    socket.setSoTimeout(5_000);
-    Handshake h = new Handshake(
-        new Handshake.Identity(systemId, id, name, "localhost", List.of()), credentials);
-    Handshake.Peer peer = h.run(in, out, true);
-    socket.setSoTimeout(0);
-    return peer;
+    return shake(new Handshake(
+        new Handshake.Identity(systemId, id, name, "localhost", List.of()), credentials), 1);
   }
 
   /**
@@ -70,17 +66,29 @@ final class RawPeer implements AutoCloseable {
    * when the link comes up.
    */
   Handshake.Peer handshakeWithDigests(String name) throws IOException, Handshake.Failure {
-    socket.setSoTimeout(5_000);
-    Handshake h = new Handshake(
-        new Handshake.Identity("diarc", id, name, "localhost", List.of(), false, true, 0), "diarcUser");
-    Handshake.Peer peer = h.run(in, out, true);
-    socket.setSoTimeout(0);
-    return peer;
+    return shake(new Handshake(
+        new Handshake.Identity("diarc", id, name, "localhost", List.of(), false, true, 0), "diarcUser"), 1);
   }
 
   /** Authenticates with the default TRADESYSID and CREDENTIALS. */
   Handshake.Peer handshake(String name) throws IOException, Handshake.Failure {
     return handshake("diarc", "diarcUser", name);
+  }
+
+  /**
+   * Authenticates with the default TRADESYSID and CREDENTIALS, saying that this is the {@code
+   * dial}th connection its container opened (see {@link Handshake.Peer#dial}).
+   */
+  Handshake.Peer handshake(String name, long dial) throws IOException, Handshake.Failure {
+    return shake(new Handshake(
+        new Handshake.Identity("diarc", id, name, "localhost", List.of()), "diarcUser"), dial);
+  }
+
+  private Handshake.Peer shake(Handshake h, long dial) throws IOException, Handshake.Failure {
+    socket.setSoTimeout(5_000);
+    Handshake.Peer peer = h.run(in, out, dial);
+    socket.setSoTimeout(0);
+    return peer;
   }
 
   /** Sends bytes; a connection the other side has closed already is not an error here. */

@@ -1,5 +1,6 @@
 package dev.trade.internal.net;
 
+import static dev.trade.internal.net.LinkThreads.readers;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -64,17 +65,6 @@ class SimultaneousConnectTest {
         .build();
   }
 
-  /** Live link reader threads towards the container named {@code peer}. */
-  private static int readers(String peer) {
-    int n = 0;
-    for (Thread t : Thread.getAllStackTraces().keySet()) {
-      if (t.isAlive() && t.getName().equals("trade-link-" + peer)) {
-        n++;
-      }
-    }
-    return n;
-  }
-
   /** Loopback ports that were free a moment ago. */
   private static int[] freePorts(int n) throws IOException {
     List<ServerSocket> sockets = new ArrayList<>();
@@ -100,11 +90,11 @@ class SimultaneousConnectTest {
     UUID low = UUID.fromString("7fffffff-ffff-ffff-ffff-ffffffffffff");
     UUID high = UUID.fromString("80000000-0000-0000-0000-000000000000");
     assertTrue(low.compareTo(high) > 0);
-    assertTrue(Network.compareIds(low, high) < 0);
-    assertTrue(Network.compareIds(high, low) > 0);
+    assertTrue(LinkSwaps.compareIds(low, high) < 0);
+    assertTrue(LinkSwaps.compareIds(high, low) > 0);
     UUID lowTail = UUID.fromString("00000000-0000-0000-7fff-ffffffffffff");
     UUID highTail = UUID.fromString("00000000-0000-0000-8000-000000000000");
-    assertTrue(Network.compareIds(lowTail, highTail) < 0);
-    assertEquals(0, Network.compareIds(low, UUID.fromString(low.toString())));
+    assertTrue(LinkSwaps.compareIds(lowTail, highTail) < 0);
+    assertEquals(0, LinkSwaps.compareIds(low, UUID.fromString(low.toString())));
   }
 }
