@@ -45,6 +45,8 @@ final class Link {
   final LinkReader reader;
   /** What is sent over the link; callers look at its room before they queue a call. */
   final LinkOutput output;
+  /** Set once the goodbye of {@link #retire} is queued. */
+  private volatile boolean retired;
   /** Completed by {@link #close}, first of all. */
   private final CompletableFuture<Void> closed = new CompletableFuture<>();
   /** This link's frames that wait for the control thread. */
@@ -161,9 +163,21 @@ final class Link {
   }
 
   private void checkOpen() throws IOException {
-    if (isClosed()) {
-      throw new IOException("link to " + peerName + " is closed");
+    if (isClosed() || retired) {
+      throw new IOException("link to " + peerName + " is closed" + (retired ? " (replaced)" : ""));
     }
+  }
+
+  /**
+   * Sends {@code goodbye} as the last frame of this link: later sends fail as on a closed link, so
+   * that a reply to a call that came over it goes over the link that replaced it. (A send that
+   * looked just before can still follow the goodbye: a race of a few instructions.)
+   */
+  void retire(byte[] goodbye) throws IOException {
+    checkOpen();
+    retired = true;
+    output.offer(goodbye);
+    sendQueued();
   }
 
   /** Writes what {@link #queue} queued, unless another thread is writing: that one writes it. */

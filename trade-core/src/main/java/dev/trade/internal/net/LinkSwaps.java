@@ -1,5 +1,6 @@
 package dev.trade.internal.net;
 
+import java.io.IOException;
 import java.util.HashMap;
 import java.util.Map;
 import java.util.UUID;
@@ -9,8 +10,8 @@ import java.util.concurrent.ConcurrentHashMap;
  * Two links to one container (docs/protocol.md, "Duplicate links"): which one both sides keep, and
  * the loss of a link held while the link that replaces it may be on its way.
  *
- * <p>Each side decides alone which of two links it keeps, and closes the other as soon as it has
- * both. The far side may then read the end of the link it had before its own handshake of the
+ * <p>Each side decides alone which of two links it keeps, and retires the other ({@link #retire})
+ * as soon as it has both. The far side may then read the end of the link it had before its own handshake of the
  * kept link is done: for that moment it has no link to the peer. Taken as a loss, that would
  * withdraw the peer's services, fail calls and tell everyone it left, only to take all of it back
  * a few milliseconds later. So a loss is held while a handshake with the same container is under
@@ -24,6 +25,8 @@ final class LinkSwaps {
   /** A lost link, why, and until when (nanoTime) its loss may be held. */
   record Held(Link link, String reason, long until) {}
 
+  private static final byte[] GOODBYE = Frames.finish(Frames.start(Wire.GOODBYE, 0));
+
   private final Map<UUID, Held> held = new HashMap<>();
   /**
    * Handshakes under way, by the container id in their peer's HELLO. A count leaves on the control
@@ -32,10 +35,36 @@ final class LinkSwaps {
    */
   private final Map<UUID, Integer> handshaking = new ConcurrentHashMap<>();
   private final long holdNanos;
+  private final long retireNanos;
+  private final Replication.Scheduler later;
 
-  /** @param holdNanos the longest a loss is held: the handshake timeout */
-  LinkSwaps(long holdNanos) {
+  /**
+   * @param holdNanos the longest a loss is held: the handshake timeout
+   * @param retireNanos how long a retired link waits for its peer to close it (FAILURETIMEOUT)
+   * @param later runs a task on the control thread after a delay
+   */
+  LinkSwaps(long holdNanos, long retireNanos, Replication.Scheduler later) {
     this.holdNanos = holdNanos;
+    this.retireNanos = retireNanos;
+    this.later = later;
+  }
+
+  /**
+   * Closes a link that another to the same container replaced, in order: says GOODBYE on it and
+   * goes on reading it until the peer, which closes it once it has read the GOODBYE, does. So
+   * nothing the peer sent over it before is lost: a call made over it is still served, its reply
+   * going over the link kept. A peer that has not closed it after {@code retireNanos} has it
+   * closed. Nothing else is sent over it after the GOODBYE ({@link Link#retire}).
+   */
+  void retire(Link l) {
+    try {
+      l.retire(GOODBYE);
+    } catch (IOException e) {
+      l.close("duplicate link");
+      return;
+    }
+    later.schedule(() -> l.close("duplicate link: the peer did not close it after GOODBYE"),
+        retireNanos);
   }
 
   /** A handshake with {@code peer} has begun (its HELLO came). Any thread. */

@@ -104,7 +104,8 @@ public final class Network implements AutoCloseable {
     Handshake handshake = new Handshake(new Handshake.Identity(settings.tradeSysId(), self, name,
         host, List.of(), settings.useEncryption(), true, settings.maxFrameSize()),
         settings.credentials());
-    this.swaps = new LinkSwaps(settings.clientSocketTimeout().toNanos());
+    this.swaps = new LinkSwaps(settings.clientSocketTimeout().toNanos(),
+        settings.failureTimeout().toNanos(), this::onControlAfter);
     this.connector = new Connector(name, handshake, (int) settings.clientSocketTimeout().toMillis(),
         workers, timer, new Connector.Sink() {
           @Override
@@ -250,14 +251,14 @@ public final class Network implements AutoCloseable {
         LOG.log(Level.DEBUG, "{0}: closed a duplicate link to {1}", name, peer.name());
       }
       if (drop == link) {
-        link.close("duplicate link");
+        swaps.retire(link);
         return;
       }
-      // Replaced in one step, then closed: a caller looking up its next hop meanwhile finds one of
+      // Replaced in one step, then retired: a caller looking up its next hop meanwhile finds one of
       // the two links, never none (no link fails its call at once as "not reachable").
       Link replaced = links.put(peer.containerId(), link);
       if (replaced != null) {
-        replaced.close("duplicate link");
+        swaps.retire(replaced);
       }
       // DEBUG, as is an orderly close: at INFO, 100 containers in one JVM spent seconds of their
       // control threads queued for the logging handler's lock (docs/configuration.md, Logging).

@@ -6,12 +6,17 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trade.TRADEContainer;
+import dev.trade.internal.codec.AllowList;
+import dev.trade.internal.codec.ByteSource;
+import dev.trade.internal.codec.Codec;
+import dev.trade.internal.codec.InfoBinding;
+import dev.trade.internal.codec.Limits;
 import java.io.IOException;
-import java.io.InputStream;
 import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.nio.ByteBuffer;
 import java.time.Duration;
+import java.util.Arrays;
 import java.util.List;
 import java.util.UUID;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -56,7 +61,7 @@ class DuplicateLinkTest {
         for (int i = 0; i < LINKS; i++) {
           RawPeer next = RawPeer.connect(c, twin);
           next.handshake("twin", i + 2); // dialled later: it replaces the link before
-          readToTheEnd(linked); // the container closed the link it replaced
+          readToGoodbye(linked); // the container retired the link it replaced
           linked.close();
           linked = next;
         }
@@ -87,7 +92,8 @@ class DuplicateLinkTest {
       later.handshake("twin-second", 2);
       Deadline.await(WAIT, () -> readers("twin-second") == 1, "the link dialled second");
       earlier.handshake("twin-first", 1); // its handshake finishes last
-      readToTheEnd(earlier);
+      readToGoodbye(earlier);
+      earlier.close();
       Deadline.await(WAIT, () -> readers("twin-first") == 0, "the link dialled first to end");
       assertEquals(1, readers("twin-second"), "links dialled second");
       assertEquals(List.of(twin.toString()), c.getNeighbours());
@@ -223,6 +229,37 @@ class DuplicateLinkTest {
     }
   }
 
+  /**
+   * A call the peer sent over a link just before it read that link's GOODBYE is still served: the
+   * container reads a retired link until its peer closes it, and answers over the link kept.
+   */
+  @Test
+  void aCallMadeOverALinkJustReplacedIsStillAnsweredOverTheLinkKept() throws Exception {
+    UUID twin = UUID.randomUUID();
+    try (TRADEContainer c = TRADEContainer.builder().name("provider")
+        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build();
+        RawPeer old = RawPeer.connect(c, twin);
+        RawPeer kept = RawPeer.connect(c, twin)) {
+      c.registerAllServices(new FreshLinkTest.Arm()); // its first service: id 1
+      Handshake.Peer provider = old.handshake("twin", 1);
+      Deadline.await(WAIT, () -> c.getNeighbours().contains(twin.toString()), "the first link");
+      kept.handshake("twin", 2);
+      readToGoodbye(old); // retired, and still open until we close it
+      Codec codec = new Codec(AllowList.withDefaults(), Limits.DEFAULT, InfoBinding.NONE);
+      RemoteCalls us = new RemoteCalls(twin, codec, null, null, null, 1 << 20);
+      old.send(us.callFrame(provider.containerId(), 7, 1, 5_000, new Object[] {3}));
+      byte[] frame;
+      do {
+        frame = kept.readFrame(); // link states, tables and pings first
+      } while (frame[0] != Wire.REPLY);
+      byte[] reply = Arrays.copyOfRange(frame, 1, frame.length);
+      assertEquals(7, Frames.requestId(reply));
+      ByteSource body = ByteSource.of(reply, Frames.ROUTING + 8, reply.length - Frames.ROUTING - 8);
+      assertEquals(Wire.OK, body.readUnsignedByte());
+      assertEquals(true, codec.read(body, getClass().getClassLoader()));
+    }
+  }
+
   @Test
   void theRuleBothSidesApply() {
     UUID small = new UUID(0, 1);
@@ -239,12 +276,11 @@ class DuplicateLinkTest {
     assertTrue(LinkSwaps.keepsAdded(small, 0, small, 5));
   }
 
-  private static void readToTheEnd(RawPeer peer) throws IOException {
-    peer.socket.setSoTimeout((int) WAIT.toMillis());
-    InputStream in = peer.socket.getInputStream();
-    byte[] buffer = new byte[8192];
-    while (in.read(buffer) >= 0) {
-      // What the container sent before it closed: not looked at.
+  /** Reads what the container sent over a link until its GOODBYE. */
+  private static void readToGoodbye(RawPeer peer) throws IOException {
+    while (peer.readFrame()[0] != Wire.GOODBYE) {
+      // Link states, tables, pings: not looked at.
     }
   }
+
 }

@@ -15,7 +15,9 @@ import org.junit.jupiter.api.Test;
 class LinkSwapsTest {
   private static final long HOLD = 1_000_000_000L;
   private final UUID peer = UUID.randomUUID();
-  private final LinkSwaps swaps = new LinkSwaps(HOLD);
+  private final LinkSwaps swaps = new LinkSwaps(HOLD, HOLD, (task, delay) -> {
+    throw new AssertionError("nothing is retired here");
+  });
 
   @Test
   void aLossWithoutAHandshakeUnderWayIsTakenAtOnce() throws Exception {
