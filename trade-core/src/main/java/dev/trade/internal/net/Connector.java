@@ -54,8 +54,8 @@ final class Connector {
     boolean isLinked(InetSocketAddress address);
 
     /**
-     * A handshake with the container {@code peer} says it is has begun: its HELLO came, and this
-     * side's AUTH is sent after this returns. Not proved until the handshake ends.
+     * A handshake has begun with a peer whose HELLO says it is container {@code peer} (not proved
+     * until the handshake ends); this side's AUTH is sent after this returns.
      */
     void handshakeBegun(UUID peer);
 
@@ -71,7 +71,6 @@ final class Connector {
   private final Sink sink;
   private final List<ServerSocket> servers = new CopyOnWriteArrayList<>();
   private final Map<InetSocketAddress, Long> backoff = new ConcurrentHashMap<>();
-
   /** Per kept address, the number of its one live retry chain; older chains end at their next step. */
   private final Map<InetSocketAddress, AtomicLong> chains = new ConcurrentHashMap<>();
   private volatile boolean closed;

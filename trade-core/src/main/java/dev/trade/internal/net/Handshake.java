@@ -33,7 +33,8 @@ import javax.crypto.spec.SecretKeySpec;
  * Opened by that party, both connections have two accepting containers, and an accepting side's
  * proof never passes for an opening side's.
  *
- * <p>Holds the identity given at construction and a count of the connections it opened; thread-safe.
+ * <p>Holds the identity given at construction and a count of the connections it opened;
+ * thread-safe.
  */
 final class Handshake {
   private static final byte[] MAGIC = {'T', 'R', 'D', 'E'};

@@ -30,7 +30,7 @@ final class Link {
   final String peerKey;
   final String peerName;
   final boolean initiatedHere;
-  /** The number its opening side gave this connection, 0 if unknown (see {@link Handshake.Peer#dial}). */
+  /** The number its opening side gave this connection, 0 if not told (see Handshake.Peer#dial). */
   final long dial;
   /** Whether both sides exchange DIGEST, not their full state, when the link comes up. */
   final boolean digests;

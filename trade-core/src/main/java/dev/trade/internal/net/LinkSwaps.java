@@ -11,13 +11,14 @@ import java.util.concurrent.ConcurrentHashMap;
  * the loss of a link held while the link that replaces it may be on its way.
  *
  * <p>Each side decides alone which of two links it keeps, and retires the other ({@link #retire})
- * as soon as it has both. The far side may then read the end of the link it had before its own handshake of the
- * kept link is done: for that moment it has no link to the peer. Taken as a loss, that would
- * withdraw the peer's services, fail calls and tell everyone it left, only to take all of it back
- * a few milliseconds later. So a loss is held while a handshake with the same container is under
- * way, until that handshake ends (the new link then took the old one's place, or it failed and the
- * loss stands), and at most one handshake timeout: the id that marks a handshake as the peer's is
- * not proved before the handshake ends, and one who claims it must not hold a loss longer.
+ * as soon as it has both. The far side may then read the end of the link it had before its own
+ * handshake of the kept link is done: for that moment it has no link to the peer. Taken as a
+ * loss, that would withdraw the peer's services, fail calls and tell everyone it left, only to
+ * take all of it back a few milliseconds later. So a loss is held while a handshake with the same
+ * container is under way, until that handshake ends (the new link then took the old one's place,
+ * or it failed and the loss stands), and at most one handshake timeout: the id that marks a
+ * handshake as the peer's is not proved before the handshake ends, and one who claims it must not
+ * hold a loss longer.
  *
  * <p>{@link #begun} is safe on any thread; everything else runs on the network's control thread.
  */
@@ -130,7 +131,8 @@ final class LinkSwaps {
     if (!handshaking.containsKey(link.peerId)) {
       return false;
     }
-    held.putIfAbsent(link.peerId, new Held(link, reason, nowNanos + holdNanos));
+    // An older hold for the peer is of a link no longer registered: this one replaces it.
+    held.put(link.peerId, new Held(link, reason, nowNanos + holdNanos));
     return true;
   }
 

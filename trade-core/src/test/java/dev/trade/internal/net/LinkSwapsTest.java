@@ -51,6 +51,17 @@ class LinkSwapsTest {
   }
 
   @Test
+  void theLossOfTheLinkThatReplacedAHeldOneIsHeldAndTakenInItsPlace() throws Exception {
+    try (LoopbackLinks links = new LoopbackLinks()) {
+      held(links);
+      Link replacement = links.link(peer, "p", new InputStream[1]); // registered, then lost too
+      assertTrue(swaps.hold(replacement, "closed by p again", 1));
+      swaps.ended(peer);
+      assertSame(replacement, swaps.settle(peer, replacement, 2).link());
+    }
+  }
+
+  @Test
   void handshakesThatNeverEndHoldALossNoLongerThanTheHold() throws Exception {
     // The id in a HELLO is not proved before the handshake ends: one who claims it, again and
     // again, must not keep a lost container linked.
