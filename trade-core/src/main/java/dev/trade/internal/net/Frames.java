@@ -72,6 +72,20 @@ final class Frames {
     return true;
   }
 
+  /**
+   * Takes {@code ms} off the timeout of a CALL payload (header not included) that waits here before
+   * it is passed on; false, leaving it as it is, if no more than that is left.
+   */
+  static boolean spendCallTime(byte[] callPayload, int ms) {
+    int at = CALL_TIMEOUT - Wire.HEADER;
+    int left = (int) INTS.get(callPayload, at);
+    if (left <= ms) {
+      return false;
+    }
+    INTS.set(callPayload, at, left - ms);
+    return true;
+  }
+
   /** Whether a complete frame (header included) keeps within {@code limit} (MAXFRAMESIZE). */
   static boolean fits(byte[] frame, int limit) {
     return frame.length - 4 <= limit;

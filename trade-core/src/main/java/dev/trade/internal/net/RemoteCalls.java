@@ -19,6 +19,7 @@ import java.util.UUID;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutionException;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
@@ -45,6 +46,11 @@ final class RemoteCalls {
    */
   static final int MAX_SERVED_PER_LINK = 512;
   private static final int MAX_IDS = 4096;
+  /**
+   * How many times a CALL whose next hop is the neighbour it came from waits for routes to settle
+   * (10, 20, 40, 80 and 160 ms: 310 ms in all) before it is passed back all the same.
+   */
+  static final int ROUTE_WAITS = 5;
 
   /** Finds the link a frame for a container leaves by. */
   interface Router {
@@ -75,6 +81,7 @@ final class RemoteCalls {
   private final Map<String, UUID> containerIds = new ConcurrentHashMap<>();
   private final ReplyWait replyWait = new ReplyWait();
   private final Deadlines deadlines;
+  private final ScheduledExecutorService timer;
 
   /** @param maxFrame the largest frame (after its length field) that peers accept: MAXFRAMESIZE */
   RemoteCalls(UUID self, Codec codec, Router router, Network.Host host,
@@ -86,6 +93,7 @@ final class RemoteCalls {
     this.serving = new Serving(self, codec, host, replies, maxFrame);
     this.maxFrame = maxFrame;
     this.deadlines = new Deadlines(timer, pending);
+    this.timer = timer;
   }
 
   /** Calls a service of another container and waits for its reply until the deadline. */
@@ -226,7 +234,7 @@ final class RemoteCalls {
     if (!destination.equals(self)) {
       // Passing a frame on writes to another link, which can block (its peer slow or not
       // reading): like a call served here, the link it came over is read elsewhere meanwhile.
-      return from.serveHere(() -> forward(from, Wire.CALL, payload, destination));
+      return from.serveHere(() -> forward(from, Wire.CALL, payload, destination, 0));
     }
     if (from.servedElsewhere() >= MAX_SERVED_PER_LINK) {
       replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, "Service not available now: container "
@@ -257,7 +265,7 @@ final class RemoteCalls {
   boolean onReply(Link from, byte[] payload) {
     UUID destination = Frames.destination(payload);
     if (!destination.equals(self)) {
-      return from.serveHere(() -> forward(null, Wire.REPLY, payload, destination)); // see onCall
+      return from.serveHere(() -> forward(null, Wire.REPLY, payload, destination, 0)); // see onCall
     }
     long id = Frames.requestId(payload);
     Pending p = pending.remove(id);
@@ -267,8 +275,11 @@ final class RemoteCalls {
     return true;
   }
 
-  /** @param from the link a CALL came in on (for its failure reply); null for a REPLY */
-  private void forward(Link from, int type, byte[] payload, UUID destination) {
+  /**
+   * @param from the link a CALL came in on (for its failure reply); null for a REPLY
+   * @param waits how many times the CALL waited for routes to settle already
+   */
+  private void forward(Link from, int type, byte[] payload, UUID destination, int waits) {
     if (type == Wire.REPLY) {
       if (Frames.hops(payload) > 1) {
         replies.deliver(destination, Frames.forwarded(type, payload), 0);
@@ -276,6 +287,20 @@ final class RemoteCalls {
       return;
     }
     Link next = router.nextHop(destination);
+    if (next == from && waits < ROUTE_WAITS && Frames.spendCallTime(payload, 10 << waits)) {
+      // The neighbour that passed the call here has this container on its shortest path to the
+      // destination, and this container has it on its own: their link states disagree for the
+      // moment (a link just came or went). Passed back, the call would go round until its hops ran
+      // out; it waits for routes to settle instead, as a reply does (Replies#deliver), and the
+      // wait counts against its timeout.
+      try {
+        timer.schedule(() -> forward(from, type, payload, destination, waits + 1), 10 << waits,
+            TimeUnit.MILLISECONDS);
+        return;
+      } catch (RejectedExecutionException closing) {
+        // Passed back below, or failed.
+      }
+    }
     if (next == null || Frames.hops(payload) <= 1) {
       LOG.log(Level.DEBUG, "dropping frame for unreachable {0}", destination);
       if (type == Wire.CALL) {
