@@ -42,13 +42,13 @@ class RouteDisagreementTest {
         RawPeer b = RawPeer.connect(x)) {
       a.handshake("a");
       b.handshake("b");
-      String ids = x.getId();
+      String xId = x.getId();
       String aId = a.id.toString();
       String bId = b.id.toString();
       // x - a - far is shorter than x - b - beyond - far: x's way to far is through a.
-      b.send(StateFrames.links(new Topology.LinkState(bId, 1, Set.of(ids, beyond))));
+      b.send(StateFrames.links(new Topology.LinkState(bId, 1, Set.of(xId, beyond))));
       b.send(StateFrames.links(new Topology.LinkState(beyond, 1, Set.of(bId, far))));
-      a.send(StateFrames.links(new Topology.LinkState(aId, 1, Set.of(ids, far))));
+      a.send(StateFrames.links(new Topology.LinkState(aId, 1, Set.of(xId, far))));
       a.send(StateFrames.links(new Topology.LinkState(far, 1, Set.of(aId, beyond))));
       a.send(StateFrames.table(tables, new Table(far, 1, List.of(new ServiceDescriptor(far, "far",
           "host", 1, "farProbe", List.of(), List.of(), "int", Set.of(), List.of())))));
@@ -61,7 +61,7 @@ class RouteDisagreementTest {
       byte[] call = new RemoteCalls(a.id, values, null, null, null, 1 << 20)
           .callFrame(UUID.fromString(far), 7, 1, 5_000, new Object[0]);
       a.send(call);
-      a.send(StateFrames.links(new Topology.LinkState(aId, 2, Set.of(ids))));
+      a.send(StateFrames.links(new Topology.LinkState(aId, 2, Set.of(xId))));
 
       byte[] passed;
       do { // link states, tables and pings first
