@@ -24,6 +24,8 @@ final class Link {
    * small call frames per system call.
    */
   static final int BUFFER = 8 * 1024;
+  /** The GOODBYE frame: the sender is closing, or done with this link (see LinkSwaps). */
+  static final byte[] GOODBYE = Frames.finish(Frames.start(Wire.GOODBYE, 0));
 
   final UUID peerId;
   /** {@link #peerId} as text, as link states and tables name containers. */
@@ -169,14 +171,14 @@ final class Link {
   }
 
   /**
-   * Sends {@code goodbye} as the last frame of this link: later sends fail as on a closed link, so
+   * Sends GOODBYE as the last frame of this link: later sends fail as on a closed link, so
    * that a reply to a call that came over it goes over the link that replaced it. (A send that
    * looked just before can still follow the goodbye: a race of a few instructions.)
    */
-  void retire(byte[] goodbye) throws IOException {
+  void retire() throws IOException {
     checkOpen();
     retired = true;
-    output.offer(goodbye);
+    output.offer(GOODBYE);
     sendQueued();
   }
 
@@ -297,6 +299,23 @@ final class Link {
       writeQueued(); // closes once nothing is queued and nobody writes
     } catch (IOException e) {
       close(reason); // nothing more can be sent
+    }
+  }
+
+  /**
+   * Says GOODBYE and closes the link once that is written: its container closes, and the peer sees
+   * an orderly leave (also over a link whose handshake finished meanwhile). Nothing is done for a
+   * link closed or closing already.
+   */
+  void leave() {
+    if (closeWhenDrained != null || isClosed()) {
+      return;
+    }
+    try {
+      send(GOODBYE);
+      closeAfterSending("container closing");
+    } catch (IOException e) {
+      close("container closing");
     }
   }
 

@@ -26,8 +26,6 @@ final class LinkSwaps {
   /** A lost link, why, and until when (nanoTime) its loss may be held. */
   record Held(Link link, String reason, long until) {}
 
-  private static final byte[] GOODBYE = Frames.finish(Frames.start(Wire.GOODBYE, 0));
-
   private final Map<UUID, Held> held = new HashMap<>();
   /**
    * Handshakes under way, by the container id in their peer's HELLO. A count leaves on the control
@@ -59,7 +57,7 @@ final class LinkSwaps {
    */
   void retire(Link l) {
     try {
-      l.retire(GOODBYE);
+      l.retire();
     } catch (IOException e) {
       l.close("duplicate link");
       return;

@@ -243,7 +243,7 @@ public final class Network implements AutoCloseable {
     }
     boolean accepted = onControl(() -> {
       if (closed) {
-        link.close("container closing");
+        link.leave();
         return;
       }
       Link drop = LinkSwaps.toClose(links.get(peer.containerId()), link, self);
@@ -266,7 +266,7 @@ public final class Network implements AutoCloseable {
       replication.linkUp(link);
     });
     if (!accepted) {
-      link.close("container closing");
+      link.leave();
       return;
     }
     // Reading starts here, not on the control thread: with 100 containers that thread fell
@@ -275,7 +275,7 @@ public final class Network implements AutoCloseable {
     // control thread after the task above, which registers the link.
     live.add(link);
     if (closed) {
-      link.close("container closing"); // close() may have gone over the live links already
+      link.leave(); // close() may have gone over the live links already
     }
     link.start(dispatch, readWatch);
     Heartbeat.greet(link);
@@ -367,15 +367,7 @@ public final class Network implements AutoCloseable {
     connector.close();
     // Also while this thread is stuck writing a goodbye below.
     timer.schedule(this::closeLinksNow, CLOSE_GRACE_MS, TimeUnit.MILLISECONDS);
-    byte[] goodbye = Frames.finish(Frames.start(Wire.GOODBYE, 0));
-    for (Link l : live) {
-      try {
-        l.send(goodbye);
-        l.closeAfterSending("container closing");
-      } catch (IOException e) {
-        l.close("container closing");
-      }
-    }
+    live.forEach(Link::leave);
     calls.failAll("container " + name + " closed");
     readWatch.close();
     control.shutdown();

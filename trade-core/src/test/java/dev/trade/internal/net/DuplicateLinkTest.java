@@ -14,7 +14,6 @@ import dev.trade.internal.codec.Limits;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.ServerSocket;
-import java.nio.ByteBuffer;
 import java.time.Duration;
 import java.util.Arrays;
 import java.util.List;
@@ -158,8 +157,9 @@ class DuplicateLinkTest {
             .build();
         RawPeer old = RawPeer.connect(c, twin);
         RawPeer next = RawPeer.connect(c, twin)) {
-      Handshake.Peer holder = old.handshake("twin", 1);
-      byte[][] nonces = replacementBegun(next, holder, twin, c);
+      old.handshake("twin", 1);
+      Deadline.await(WAIT, () -> c.getNeighbours().contains(twin.toString()), "the first link");
+      RawPeer.Begun begun = next.begin("twin", 2);
       old.close();
       Deadline.await(WAIT, () -> log.has(Level.FINE, "holder: link to twin closed", "the loss waits"),
           "the loss held; have " + log.tail());
@@ -169,51 +169,12 @@ class DuplicateLinkTest {
             && c.getNeighbours().isEmpty(), "the loss taken; have " + log.tail());
         return;
       }
-      next.send(RawPeer.frame(Wire.AUTH, twinHandshake(twin).mac(Handshake.OPENED, nonces[0],
-          nonces[1], twin, holder.containerId())));
+      next.finish(begun);
       Deadline.await(WAIT, () -> log.has(Level.FINE, "holder: linked to twin")
           && readers("twin") == 1, "the replacement; have " + log.tail());
       assertEquals(List.of(twin.toString()), c.getNeighbours());
       assertFalse(log.has(Level.INFO, "closed:"), log.tail());
     }
-  }
-
-  /**
-   * Begins the handshake of a second link as {@code twin}, dialled after the first: sends its HELLO
-   * and reads the container's HELLO and AUTH, leaving the container waiting for ours. Returns our
-   * nonce and the container's.
-   */
-  private static byte[][] replacementBegun(RawPeer next, Handshake.Peer holder, UUID twin,
-      TRADEContainer c) throws Exception {
-    Deadline.await(WAIT, () -> c.getNeighbours().contains(twin.toString()), "the first link");
-    byte[] nonce = new byte[32];
-    next.send(RawPeer.frame(Wire.HELLO, twinHandshake(twin).hello(nonce, 2)));
-    byte[] hello = next.readFrame();
-    assertEquals(Wire.HELLO, hello[0]);
-    ByteBuffer b = ByteBuffer.wrap(hello, 1, hello.length - 1);
-    b.position(b.position() + 5); // magic, version
-    skipString(b); // system id
-    assertEquals(holder.containerId(), new UUID(b.getLong(), b.getLong()));
-    skipString(b); // name
-    skipString(b); // host
-    for (int n = b.get() & 0xff; n > 0; n--) {
-      skipString(b);
-    }
-    byte[] theirs = new byte[32];
-    b.get(theirs);
-    // Sent once the container has read our HELLO: from then on it counts the handshake as ours.
-    assertEquals(Wire.AUTH, next.readFrame()[0]);
-    return new byte[][] {nonce, theirs};
-  }
-
-  private static void skipString(ByteBuffer b) {
-    int length = b.get() & 0xff;
-    b.position(b.position() + length);
-  }
-
-  private static Handshake twinHandshake(UUID twin) {
-    return new Handshake(new Handshake.Identity("diarc", twin, "twin", "localhost", List.of()),
-        "diarcUser");
   }
 
   /** How many handshakes of {@code self} with {@code peer} ended linked or as a duplicate so far. */

@@ -84,6 +84,51 @@ final class RawPeer implements AutoCloseable {
         new Handshake.Identity("diarc", id, name, "localhost", List.of()), "diarcUser"), dial);
   }
 
+  /** A handshake {@link #begin} began: what {@link #finish} needs. */
+  record Begun(Handshake handshake, byte[] nonce, byte[] theirNonce, UUID theirId) {}
+
+  /**
+   * Begins a handshake as container {@link #id} named {@code name}, saying that this is the
+   * {@code dial}th connection it opened: sends our HELLO and reads the container's HELLO and AUTH.
+   * The container has then counted the handshake as one with us, and waits for our AUTH.
+   */
+  Begun begin(String name, long dial) throws IOException {
+    Handshake h = new Handshake(new Handshake.Identity("diarc", id, name, "localhost", List.of()),
+        "diarcUser");
+    byte[] nonce = new byte[32];
+    send(frame(Wire.HELLO, h.hello(nonce, dial)));
+    byte[] hello = readFrame();
+    if (hello[0] != Wire.HELLO) {
+      throw new IOException("expected HELLO, got frame type " + hello[0]);
+    }
+    ByteBuffer b = ByteBuffer.wrap(hello, 1, hello.length - 1);
+    b.position(b.position() + 5); // magic, version
+    skipString(b); // system id
+    UUID theirs = new UUID(b.getLong(), b.getLong());
+    skipString(b); // name
+    skipString(b); // host
+    for (int n = b.get() & 0xff; n > 0; n--) {
+      skipString(b);
+    }
+    byte[] theirNonce = new byte[32];
+    b.get(theirNonce);
+    if (readFrame()[0] != Wire.AUTH) { // sent once it read our HELLO
+      throw new IOException("expected AUTH");
+    }
+    return new Begun(h, nonce, theirNonce, theirs);
+  }
+
+  /** Sends our AUTH: the container's side of the handshake {@link #begin} began ends. */
+  void finish(Begun b) {
+    send(frame(Wire.AUTH, b.handshake().mac(Handshake.OPENED, b.nonce(), b.theirNonce(), id,
+        b.theirId())));
+  }
+
+  private static void skipString(ByteBuffer b) {
+    int length = b.get() & 0xff;
+    b.position(b.position() + length);
+  }
+
   private Handshake.Peer shake(Handshake h, long dial) throws IOException, Handshake.Failure {
     socket.setSoTimeout(5_000);
     Handshake.Peer peer = h.run(in, out, dial);
