@@ -143,6 +143,7 @@ final class Link {
   void passOn(byte[] call) throws IOException {
     checkOpen();
     output.offerPassedOn(call);
+    checkNotAfterGoodbye(call);
     sendQueued();
   }
 
@@ -162,6 +163,19 @@ final class Link {
   void queue(byte[] frame) throws IOException {
     checkOpen();
     output.offer(frame);
+    checkNotAfterGoodbye(frame);
+  }
+
+  /**
+   * A frame queued while the link was retired may be behind the GOODBYE, which nothing follows
+   * ({@link LinkOutput#write}): it is taken back, and the sender told as if the link were closed.
+   * (A frame queued after the retirement is seen here to be so: its sender read {@link #retired}
+   * after queueing it, and the retiring thread set it before it queued the GOODBYE.)
+   */
+  private void checkNotAfterGoodbye(byte[] frame) throws IOException {
+    if (retired && output.withdraw(frame)) {
+      throw new IOException("link to " + peerName + " is closed (replaced)");
+    }
   }
 
   private void checkOpen() throws IOException {
@@ -171,9 +185,8 @@ final class Link {
   }
 
   /**
-   * Sends GOODBYE as the last frame of this link: later sends fail as on a closed link, so
-   * that a reply to a call that came over it goes over the link that replaced it. (A send that
-   * looked just before can still follow the goodbye: a race of a few instructions.)
+   * Sends GOODBYE as the last frame of this link: later sends fail as on a closed link, so that a
+   * reply to a call that came over it goes over the link that replaced it.
    */
   void retire() throws IOException {
     checkOpen();

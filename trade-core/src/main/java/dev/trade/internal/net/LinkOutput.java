@@ -66,6 +66,8 @@ final class LinkOutput {
   private volatile boolean burst;
   /** Whether a frame was sent, and perhaps left for the end of a burst, since the last look. */
   private volatile boolean deferred;
+  /** Set once {@link Link#GOODBYE} is written: nothing is written after it. */
+  private volatile boolean saidGoodbye;
   /**
    * While a thread writes, when it last moved on (nanoTime, never 0): before its current write to
    * the socket, or shortly before; 0 when nobody writes. A peer that stops reading stalls a write
@@ -102,6 +104,16 @@ final class LinkOutput {
   void offer(byte[] frame) {
     queued.addAndGet(frame.length);
     queue.offer(frame);
+  }
+
+  /** Takes back a frame {@link #offer}ed and not written yet; false if it was written. */
+  boolean withdraw(byte[] frame) {
+    if (!queue.remove(frame)) {
+      return false;
+    }
+    passedOn.remove(frame);
+    queued.addAndGet(-frame.length);
+    return true;
   }
 
   /**
@@ -226,7 +238,7 @@ final class LinkOutput {
    * @throws IOException if a write failed; what was queued is dropped (the link is to close)
    */
   boolean write(boolean budgeted) throws IOException {
-    while (!queue.isEmpty() && writing.compareAndSet(false, true)) {
+    while (!saidGoodbye && !queue.isEmpty() && writing.compareAndSet(false, true)) {
       long began = System.nanoTime();
       writingSince = began | 1;
       boolean over = false; // found over budget at the last clock read
@@ -234,7 +246,7 @@ final class LinkOutput {
         int untimed = 0; // bytes handed to the stream since writingSince was taken
         long done = 0; // bytes of whole frames handed to the stream, still counted as queued
         byte[] next;
-        while (!(budgeted && over) && (next = queue.poll()) != null) {
+        while (!(budgeted && over) && !saidGoodbye && (next = queue.poll()) != null) {
           boolean left = !passedOn.isEmpty() && passedOn.remove(next)
               ? !Frames.unstampDue(next, nowMillis())
               : queued.get() >= CONGESTED && abandoned.test(next);
@@ -259,11 +271,14 @@ final class LinkOutput {
             untimed += n;
           }
           done += next.length;
+          if (next == Link.GOODBYE) {
+            saidGoodbye = true; // the last frame: what follows stays queued
+          }
         }
         if (untimed > 0 || done > 0) {
           progressed(done);
         }
-        if (budgeted && over && !queue.isEmpty()) {
+        if (budgeted && over && !saidGoodbye && !queue.isEmpty()) {
           return true; // the rest, and the flush, are for whoever writes next
         }
         out.flush();
@@ -288,8 +303,8 @@ final class LinkOutput {
     return writingSince;
   }
 
-  /** Whether nothing is queued and nobody writes. */
+  /** Whether nothing is left to write (all queued was written, or GOODBYE was) and nobody writes. */
   boolean drained() {
-    return queue.isEmpty() && !writing.get();
+    return (queue.isEmpty() || saidGoodbye) && !writing.get();
   }
 }

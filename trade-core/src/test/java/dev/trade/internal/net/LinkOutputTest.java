@@ -1,6 +1,7 @@
 package dev.trade.internal.net;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
@@ -49,6 +50,26 @@ class LinkOutputTest {
       assertTrue(socket.stamps.get(i) - socket.stamps.get(i - 1) > 0, socket.stamps.toString());
     }
     assertEquals(0, output.writingSince(), "nobody writes any more");
+  }
+
+  @Test
+  void nothingIsWrittenAfterGoodbyeAndWhatWasQueuedAfterItCanBeTakenBack() throws Exception {
+    Recording socket = new Recording();
+    LinkOutput output = new LinkOutput(socket, null, () -> { });
+    socket.output = output;
+    byte[] before = new byte[10];
+    byte[] after = new byte[20];
+    output.offer(before);
+    output.offer(Link.GOODBYE);
+    output.offer(after);
+    assertFalse(output.write(false));
+    assertEquals(List.of(10, Link.GOODBYE.length), socket.lengths);
+    assertTrue(output.drained(), "a link that said goodbye has nothing more to write");
+    assertFalse(output.write(false));
+    assertEquals(2, socket.lengths.size(), "nor on a later write");
+    assertFalse(output.withdraw(before), "written");
+    assertTrue(output.withdraw(after));
+    assertEquals(0, output.queuedBytes());
   }
 
   @Test
