@@ -8,6 +8,7 @@ import java.net.NetworkInterface;
 import java.nio.ByteBuffer;
 import java.nio.channels.DatagramChannel;
 import java.time.Duration;
+import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashMap;
 import java.util.List;
@@ -28,6 +29,10 @@ import java.util.function.Supplier;
  * burst at start, then every interval and on request; and one straight to a newcomer, in answer
  * to its first announcement. It sends on a scheduler thread: the container's timer when discovery
  * is given one (one thread fewer to start per container), else a daemon thread of its own.
+ *
+ * <p>What it logs while the start burst goes out waits until the burst has been sent (or the
+ * announcer closes): the first log record of a JVM sets up its logging and date formatting, tens of
+ * milliseconds of CPU that would otherwise compete with the container's first link-ups.
  *
  * <p>Every send happens under {@code lock}, and so do the switches: once {@link #setOn(boolean)
  * setOn(false)} or {@link #close()} has returned, nothing more is sent. Thread-safe.
@@ -57,6 +62,8 @@ final class Announcer {
   private final Map<String, String> states = new HashMap<>();
   // Guarded by lock: what each interface announces, as last worked out; see plan(int).
   private final Plan[] plans;
+  // Guarded by lock: log lines held back until the start burst has been sent; null after that.
+  private List<Runnable> heldLines = new ArrayList<>();
   private volatile boolean on; // Written under lock.
   private boolean closed; // Guarded by lock.
 
@@ -87,25 +94,26 @@ final class Announcer {
     });
   }
 
-  void start(Duration interval) {
+  /**
+   * Starts the start burst and the steady announcements.
+   *
+   * @param startLine logs what this discovery does; written with the lines held back at start,
+   *     before them
+   */
+  void start(Duration interval, Runnable startLine) {
+    synchronized (lock) {
+      heldLines.add(startLine);
+    }
     scheduleBurst();
     long ms = interval.toMillis();
     try {
+      // After the burst's last announcement, which is due at the same time and was queued first.
+      scheduler.schedule(this::writeHeldLines, BURST_MILLIS[BURST_MILLIS.length - 1],
+          TimeUnit.MILLISECONDS);
       steady = scheduler.scheduleWithFixedDelay(this::announceToGroup, ms, ms, TimeUnit.MILLISECONDS);
     } catch (RejectedExecutionException e) {
       // A given scheduler shut down: its container is closing.
-    }
-  }
-
-  /**
-   * Runs {@code task} on the announcing thread after the announcements due now (the first of the
-   * start burst); not at all once closing.
-   */
-  void runSoon(Runnable task) {
-    try {
-      scheduler.execute(task);
-    } catch (RejectedExecutionException e) {
-      // Closing: nobody waits for it.
+      writeHeldLines();
     }
   }
 
@@ -175,6 +183,7 @@ final class Announcer {
     synchronized (lock) {
       closed = true;
     }
+    writeHeldLines(); // a container closed within its start burst still says what it did
     // Tasks still queued on a given scheduler find it closed and send nothing.
     if (ownScheduler) {
       scheduler.shutdownNow();
@@ -298,8 +307,25 @@ final class Announcer {
   // Caller holds lock.
   private void note(NetworkInterface nif, Level level, String state) {
     if (!state.equals(states.put(nif.getName(), state))) {
-      LOG.log(level, "Discovery on {0} to {1}: {2}", nif.getName(), Announcement.format(target),
-          state);
+      Runnable line = () -> LOG.log(level, "Discovery on {0} to {1}: {2}", nif.getName(),
+          Announcement.format(target), state);
+      if (heldLines != null) {
+        heldLines.add(line); // in order with the rest, warnings too
+      } else {
+        line.run();
+      }
+    }
+  }
+
+  /** Writes the lines held back at start, once; outside the lock, which every send takes. */
+  private void writeHeldLines() {
+    List<Runnable> lines;
+    synchronized (lock) {
+      lines = heldLines;
+      heldLines = null;
+    }
+    if (lines != null) {
+      lines.forEach(Runnable::run);
     }
   }
 }

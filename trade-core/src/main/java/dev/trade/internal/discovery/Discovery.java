@@ -120,15 +120,13 @@ public final class Discovery implements AutoCloseable {
       announcer.close(); // and the senders
       throw e;
     }
-    announcer.start(b.interval);
-    // Logged on the announcing thread, after the first announcement: the first log record of a JVM
-    // sets up its logging and date formatting, which on the building thread added about 60 ms to a
-    // fresh JVM's build() (medians of 40 interleaved pairs with the line and without it). The TTL
-    // goes in as text: a number makes the logger set up the locale's number format first.
+    // The start line waits, with the interfaces' first lines, until the start burst has been sent
+    // (Announcer). The TTL goes in as text: a number makes the logger set up the locale's number
+    // format first.
     Object[] facts = {b.containerName, b.systemId, Announcement.format(target), interfaceNames(),
         b.range, Integer.toString(b.range.ttl), b.broadcast, b.discovery};
-    announcer.runSoon(() -> LOG.log(Level.INFO, "Discovery of ''{0}'' in system ''{1}'' on {2} via"
-        + " {3} ({4}, TTL {5}): announcing {6}, listening {7}", facts));
+    announcer.start(b.interval, () -> LOG.log(Level.INFO, "Discovery of ''{0}'' in system ''{1}''"
+        + " on {2} via {3} ({4}, TTL {5}): announcing {6}, listening {7}", facts));
   }
 
   /** A builder; see {@link Builder} for what is required and the defaults. */
