@@ -209,7 +209,9 @@ def main():
           "benchmark JVM. *start → callable*: from just before the provider's `build()` to the end of "
           "the peer's first successful call, made in its `joined` callback. *spawn → callable* adds "
           "the JVM's own start. *kill → left*: from `kill -9` of the provider's JVM to the peer's "
-          "`left` callback.\n")
+          "`left` callback. The provider's JVM has a TRADE application's class path, trade-core and the "
+          "benchmark's own classes, not the peers' jars the benchmark module also carries (21 MB, whose "
+          "every jar the JDK's service lookups at start would open and index).\n")
         w("| measure | median | min | max | with AppCDS: median | min | max |")
         w("|---|---|---|---|---|---|---|")
         cds = life.get("iterations_appcds", [])
@@ -231,7 +233,7 @@ def main():
     if sizes:
         w("## Many containers on one host\n")
         w("Containers run 25 to a JVM plus one JVM holding a single container under `-Xmx16m` "
-          "(starting 100 JVMs on 2 cores would measure JVM start-up, not TRADE). All find each other "
+          "(starting 100 JVMs on 2 cores would measure JVM start-up, not TRADE), each on a TRADE application's class path. All find each other "
           "by multicast on loopback. A JVM starts its containers one after the other. *All built*: from the moment every JVM is told to build "
           "its containers until the last one has registered its service. *Converged*: from that same "
           "moment until every container lists every container's service. *Heap per container*: "

@@ -95,7 +95,8 @@ final class Lifecycle {
     TRADEServiceConstraints mine = new TRADEServiceConstraints().name("lifecyclePing").inGroups(group);
     peer.requestNotification(listener, "joined", mine, null, "onJoined");
     peer.requestNotification(listener, "left", mine, null, "onLeft");
-    Jvm provider = Jvm.start(options, ProviderMain.class, logs.resolve("provider.log"), sysId, port, group);
+    Jvm provider = Jvm.start(Jvm.tradeClassPath(), options, ProviderMain.class,
+        logs.resolve("provider.log"), sysId, port, group);
     try {
       String[] built = provider.await("BUILT", 30_000).split(" ");
       long before = Long.parseLong(built[0]);

@@ -61,7 +61,7 @@ final class Scale {
         if (k == 1 && !extra.isBlank()) {
           options.addAll(List.of(extra.trim().split("\\s+")));
         }
-        jvms.add(Jvm.start(options, ScaleNode.class,
+        jvms.add(Jvm.start(Jvm.tradeClassPath(), options, ScaleNode.class,
             logs.resolve("scale-" + n + "-" + k + ".log"), sysId, port,
             Integer.toString(counts.get(k)), Integer.toString(n), "c" + k + "-"));
       }
