@@ -3,6 +3,7 @@ package dev.trade.internal.net;
 import java.io.BufferedOutputStream;
 import java.io.IOException;
 import java.net.Socket;
+import java.net.SocketException;
 import java.util.UUID;
 import java.util.concurrent.CompletableFuture;
 
@@ -86,8 +87,8 @@ final class Link {
     this.digests = peer.digests();
     this.sendLimit = peer.maxFrame() > 0 ? Math.min(maxFrame, peer.maxFrame()) : maxFrame;
     FrameCipher cipher = peer.cipher();
-    this.input = new LinkInput(socket.getInputStream(), BUFFER, peerName, maxFrame, cipher,
-        (type, buf, off, len) -> handler.isStale(this, type, buf, off, len), arrived);
+    this.input = new LinkInput(socket, socket.getInputStream(), BUFFER, peerName, maxFrame,
+        cipher, (type, buf, off, len) -> handler.isStale(this, type, buf, off, len), arrived);
     this.reader = new LinkReader(this, input);
     this.output = new LinkOutput(new BufferedOutputStream(socket.getOutputStream(), BUFFER), cipher,
         () -> lastSent = System.nanoTime(), LinkOutput.ROOM,
@@ -283,6 +284,11 @@ final class Link {
    */
   boolean socketClosed() {
     return closed.isDone();
+  }
+
+  /** The socket's read timeout in ms, 0 for none (for tests: the link's thread reads without). */
+  int readTimeout() throws SocketException {
+    return socket.getSoTimeout();
   }
 
   /** Why the link was closed, by whoever closed it first; null while it is open. */

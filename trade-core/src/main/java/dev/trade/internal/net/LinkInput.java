@@ -5,8 +5,11 @@ import java.io.DataInputStream;
 import java.io.EOFException;
 import java.io.IOException;
 import java.io.InputStream;
+import java.net.Socket;
+import java.net.SocketTimeoutException;
 import java.security.GeneralSecurityException;
 import java.util.Arrays;
+import java.util.concurrent.TimeUnit;
 
 /**
  * A link's input: reads its frames ({@link #readFrame}), checking, opening and judging each, and
@@ -36,6 +39,7 @@ final class LinkInput extends BufferedInputStream {
   }
 
   private final DataInputStream data = new DataInputStream(this);
+  private final Socket socket;
   private final String peerName;
   private final int maxFrame;
   private final FrameCipher cipher;
@@ -43,12 +47,14 @@ final class LinkInput extends BufferedInputStream {
   private final Runnable arrived;
 
   /**
+   * @param socket the link's, read through {@code in}: {@link #fillWithin} times its reads out
    * @param cipher opens the peer's frames; null when the link is not encrypted
    * @param arrived runs whenever bytes arrive: a peer whose bytes keep coming is not silent
    */
-  LinkInput(InputStream in, int size, String peerName, int maxFrame, FrameCipher cipher,
-      Judge judge, Runnable arrived) {
+  LinkInput(Socket socket, InputStream in, int size, String peerName, int maxFrame,
+      FrameCipher cipher, Judge judge, Runnable arrived) {
     super(in, size);
+    this.socket = socket;
     this.peerName = peerName;
     this.maxFrame = maxFrame;
     this.cipher = cipher;
@@ -179,6 +185,43 @@ final class LinkInput extends BufferedInputStream {
       count += n;
     }
     return wholeFrame(buf, pos, count);
+  }
+
+  /**
+   * Moves into the buffer what arrives within {@code nanos} (at least a millisecond), blocking in
+   * the read: for a caller that reads its own reply and has spun long enough; the reply then wakes
+   * it, not the link's thread, which would have to wake it in turn. The socket's read timeout is
+   * set for this read and cleared after it: the link's thread reads without one, and never while
+   * a caller does.
+   *
+   * @return true if a whole frame is buffered or bytes came; false if none came in time, at the end
+   *     of the stream (which the link's thread reads again), and for a frame larger than the buffer
+   */
+  synchronized boolean fillWithin(long nanos) throws IOException {
+    if (wholeFrame(buf, pos, count)) {
+      return true;
+    }
+    if (pos > 0) {
+      System.arraycopy(buf, pos, buf, 0, count - pos); // make room; marks are never used here
+      count -= pos;
+      pos = 0;
+    }
+    if (count == buf.length) {
+      return false;
+    }
+    socket.setSoTimeout((int) Math.max(1, TimeUnit.NANOSECONDS.toMillis(nanos)));
+    try {
+      int n = in.read(buf, count, buf.length - count);
+      if (n <= 0) {
+        return false;
+      }
+      count += n;
+      return true;
+    } catch (SocketTimeoutException e) {
+      return false;
+    } finally {
+      socket.setSoTimeout(0);
+    }
   }
 
   private static boolean wholeFrame(byte[] b, int p, int c) {

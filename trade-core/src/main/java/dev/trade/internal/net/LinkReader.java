@@ -83,6 +83,46 @@ final class LinkReader {
   }
 
   /**
+   * After {@link #readFor}: waits for {@code reply} in reads that block, until {@code until}
+   * ({@link System#nanoTime}), if reading is lent to callers and nobody reads: then the reply wakes
+   * this thread directly, as a raw socket's caller is woken, instead of waking the link's thread,
+   * which would wake this one in turn. Returns at once otherwise.
+   */
+  void blockFor(CompletableFuture<?> reply, long until) {
+    if (reply.isDone() || link.socketClosed() || !link.role.tryTake()) {
+      return;
+    }
+    String why = readBlocking(reply, until);
+    if (why == null) {
+      link.role.release();
+    } else if (why != MOVED) {
+      end(why);
+    }
+  }
+
+  /** As {@link #readLent}, but waiting in reads that block until {@code until} at the most. */
+  private String readBlocking(CompletableFuture<?> reply, long until) {
+    try {
+      while (!link.socketClosed()) {
+        long left = until - System.nanoTime();
+        if (input.holdsWholeFrame()) {
+          String why = readOne(true);
+          if (why != null) {
+            return why;
+          }
+        } else if (!link.endBurst()) {
+          return MOVED; // the flush blocked and reading went on in another thread
+        } else if (reply.isDone() || left <= 0 || !input.fillWithin(left)) {
+          return null; // done, out of time, or left to the link's thread (see fillWithin)
+        }
+      }
+      return "closed";
+    } catch (IOException e) {
+      return lost(e);
+    }
+  }
+
+  /**
    * A caller reads the link until its reply is done (and the frames read with it are handed out)
    * or its time is up; answers as {@link #readOne} does. It hands out only frames that arrived
    * whole and never blocks in a read, so that it stops in time whatever the peer sends; the end of

@@ -7,23 +7,37 @@ import java.util.concurrent.atomic.AtomicInteger;
 
 /**
  * How a caller waits for its reply. A lone caller whose replies have lately come back within
- * {@link #MAX_SPIN_NANOS} waits actively for about two round trips before it parks, and reads the
- * link itself meanwhile (see {@link ReadRole}): the reply then wakes no thread on its way to the
- * caller, which saves one or two thread wake-ups (5-20 us each on a small machine) per call. Should
- * the link's thread still read when the reply comes, it hands the reply over without waking the
- * caller. Many callers at once park at once: their spinning would take the cores that produce
- * the replies. Safe for concurrent use.
+ * {@link #MAX_SPIN_NANOS} waits actively for about two round trips, and reads the link itself
+ * meanwhile (see {@link ReadRole}): the reply then wakes no thread on its way to the caller, which
+ * saves one or two thread wake-ups (5-20 us each on a small machine) per call. A reply later than
+ * that it waits for in a read of its own for up to {@link #BLOCK_NANOS}, so that the reply wakes
+ * it directly, not through the link's thread; then it parks. Should the link's thread still read
+ * when the reply comes, it hands the reply over without waking the caller. Many callers at once
+ * park at once: their spinning would take the cores that produce the replies. Safe for concurrent
+ * use.
  */
 final class ReplyWait {
   /** Spinning only helps when another core can run the threads that bring the reply. */
   private static final boolean SPIN = Runtime.getRuntime().availableProcessors() > 1;
   /** The longest a caller spins before it parks; replies slower than this are not waited for so. */
   private static final long MAX_SPIN_NANOS = TimeUnit.MICROSECONDS.toNanos(100);
+  /** How long a lone caller that spun in vain waits in a read of its own before it parks. */
+  private static final long BLOCK_NANOS = TimeUnit.MILLISECONDS.toNanos(1);
 
+  private final long blockNanos;
   /** Callers waiting for a reply; only a lone one spins. */
   private final AtomicInteger waiting = new AtomicInteger();
   /** A running average of recent round trips (ns); racy updates are fine for an estimate. */
   private volatile long roundTrip = MAX_SPIN_NANOS / 2;
+
+  ReplyWait() {
+    this(BLOCK_NANOS);
+  }
+
+  /** @param blockNanos how long a lone caller waits in a read (tests give it longer) */
+  ReplyWait(long blockNanos) {
+    this.blockNanos = blockNanos;
+  }
 
   /** How many callers wait now (for tests). */
   int waiting() {
@@ -67,6 +81,9 @@ final class ReplyWait {
           long until = sent + Math.min(MAX_SPIN_NANOS, 2 * estimate);
           if (borrowed) {
             link.reader.readFor(reply, until);
+            if (!reply.isDone() && waiting.get() == 1) {
+              link.reader.blockFor(reply, System.nanoTime() + blockNanos);
+            }
           } else {
             while (!reply.isDone() && System.nanoTime() - until < 0) {
               Thread.onSpinWait();

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import dev.trade.internal.codec.ByteSink;
 import java.io.IOException;
@@ -144,6 +145,52 @@ class LentReadingTest {
     link.role.giveBack(false);
     assertTrue(h.reply.isDone(), "the reply came within the wait");
     assertSame(Thread.currentThread(), h.replyReaders.poll(), "the caller read its reply");
+  }
+
+  /**
+   * A lone caller that spun in vain waits for its reply in a read of its own: the reply wakes it,
+   * not the link's thread, which would then have to wake it.
+   */
+  @Test
+  void aLoneCallerWhoseReplyComesAfterItsSpinWaitsInAReadAndReadsItItself() throws Exception {
+    assumeTrue(Runtime.getRuntime().availableProcessors() > 1, "callers wait actively on 2+ cores");
+    Handler h = new Handler();
+    Link link = started(h);
+    ReplyWait wait = new ReplyWait(WAIT.toNanos());
+    assertTrue(wait.borrow(link), "a lone caller reads its reply itself");
+    sendFromFar(Wire.PING); // lets the link's thread, blocked in a read, see the caller
+    Deadline.await(WAIT, link.role::isLent, "the link's thread to lend reading");
+    Thread[] caller = new Thread[1];
+    long spunLongAgo = System.nanoTime() - Duration.ofSeconds(1).toNanos();
+    Future<byte[]> reply = workers.submit(() -> {
+      caller[0] = Thread.currentThread();
+      return wait.await(link, true, h.reply, spunLongAgo);
+    });
+    Deadline.await(WAIT, link.role::isCallerReading, "the caller to wait in a read");
+    sendFromFar(Wire.REPLY);
+    assertEquals(8, reply.get(WAIT.toMillis(), TimeUnit.MILLISECONDS).length, "the reply");
+    assertSame(caller[0], h.replyReaders.poll(), "the caller read its reply");
+    Deadline.await(WAIT, () -> !link.role.isLent(), "the link's thread to take reading back");
+  }
+
+  /** A caller waiting in a read gives reading back in time, and the link's thread reads on. */
+  @Test
+  void aCallerWaitingInAReadStopsInTimeAndLeavesNoReadTimeoutBehind() throws Exception {
+    Handler h = new Handler();
+    Link link = started(h);
+    borrow(link);
+    CompletableFuture<byte[]> none = new CompletableFuture<>(); // no reply comes
+    long start = System.nanoTime();
+    link.reader.blockFor(none, start + Duration.ofMillis(20).toNanos());
+    assertTrue(System.nanoTime() - start < WAIT.toNanos(), "stopped waiting");
+    assertEquals(0, link.readTimeout(), "the link's thread reads without a timeout");
+    link.role.giveBack(false);
+    Deadline.await(WAIT, () -> !link.role.isLent(), "the link's thread to take reading back");
+    sendFromFar(Wire.REPLY);
+    Thread reader = h.replyReaders.poll(WAIT.toMillis(), TimeUnit.MILLISECONDS);
+    assertNotEquals(null, reader, "a frame after the caller stopped was read");
+    assertNotEquals(Thread.currentThread(), reader);
+    assertEquals(0, h.closings.get(), "the link is open: " + h.why);
   }
 
   @Test
