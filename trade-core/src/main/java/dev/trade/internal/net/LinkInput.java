@@ -175,10 +175,8 @@ final class LinkInput extends BufferedInputStream {
     if (ready <= 0) {
       return false; // nothing, or the end of the stream, which a blocking read will find
     }
-    if (buf.length - count < ready && pos > 0) {
-      System.arraycopy(buf, pos, buf, 0, count - pos); // make room; marks are never used here
-      count -= pos;
-      pos = 0;
+    if (buf.length - count < ready) {
+      compact();
     }
     int n = in.read(buf, count, Math.min(ready, buf.length - count));
     if (n > 0) {
@@ -201,11 +199,7 @@ final class LinkInput extends BufferedInputStream {
     if (wholeFrame(buf, pos, count)) {
       return true;
     }
-    if (pos > 0) {
-      System.arraycopy(buf, pos, buf, 0, count - pos); // make room; marks are never used here
-      count -= pos;
-      pos = 0;
-    }
+    compact();
     if (count == buf.length) {
       return false;
     }
@@ -221,6 +215,15 @@ final class LinkInput extends BufferedInputStream {
       return false;
     } finally {
       socket.setSoTimeout(0);
+    }
+  }
+
+  /** Moves the unread bytes to the buffer's start, to make room; marks are never used here. */
+  private void compact() {
+    if (pos > 0) {
+      System.arraycopy(buf, pos, buf, 0, count - pos);
+      count -= pos;
+      pos = 0;
     }
   }
 
