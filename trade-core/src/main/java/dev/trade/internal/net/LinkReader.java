@@ -70,12 +70,7 @@ final class LinkReader {
     // A closed link brings no reply; the caller is failed from elsewhere (see LinkHandler#closed).
     while (!reply.isDone() && !link.socketClosed() && System.nanoTime() - until < 0) {
       if (link.role.tryTake()) {
-        String why = readLent(reply, until);
-        if (why == null) {
-          link.role.release();
-        } else if (why != MOVED) {
-          end(why);
-        }
+        readLent(reply, until, false);
       } else {
         Thread.onSpinWait();
       }
@@ -89,10 +84,20 @@ final class LinkReader {
    * which would wake this one in turn. Returns at once otherwise.
    */
   void blockFor(CompletableFuture<?> reply, long until) {
-    if (reply.isDone() || link.socketClosed() || !link.role.tryTake()) {
-      return;
+    if (!reply.isDone() && !link.socketClosed() && link.role.tryTake()) {
+      readLent(reply, until, true);
     }
-    String why = readBlocking(reply, until);
+  }
+
+  /**
+   * A caller that took reading reads the link until its reply is done (and the frames read with it
+   * are handed out) or its time is up, then gives reading back, or ends the link. It hands out only
+   * frames that arrived whole, and reads either without blocking ({@code block} false: it spins
+   * meanwhile) or in reads timed out by {@code until}, so that it stops in time whatever the peer
+   * sends; the end of the stream, or a frame larger than the buffer, is left to the link's thread.
+   */
+  private void readLent(CompletableFuture<?> reply, long until, boolean block) {
+    String why = readLentFrames(reply, until, block);
     if (why == null) {
       link.role.release();
     } else if (why != MOVED) {
@@ -100,47 +105,21 @@ final class LinkReader {
     }
   }
 
-  /** As {@link #readLent}, but waiting in reads that block until {@code until} at the most. */
-  private String readBlocking(CompletableFuture<?> reply, long until) {
+  /** The reading of {@link #readLent}; answers as {@link #readOne} does. */
+  private String readLentFrames(CompletableFuture<?> reply, long until, boolean block) {
     try {
       while (!link.socketClosed()) {
-        long left = until - System.nanoTime();
-        if (input.holdsWholeFrame()) {
-          String why = readOne(true);
-          if (why != null) {
-            return why;
-          }
-        } else if (!link.endBurst()) {
-          return MOVED; // the flush blocked and reading went on in another thread
-        } else if (reply.isDone() || left <= 0 || !input.fillWithin(left)) {
-          return null; // done, out of time, or left to the link's thread (see fillWithin)
-        }
-      }
-      return "closed";
-    } catch (IOException e) {
-      return lost(e);
-    }
-  }
-
-  /**
-   * A caller reads the link until its reply is done (and the frames read with it are handed out)
-   * or its time is up; answers as {@link #readOne} does. It hands out only frames that arrived
-   * whole and never blocks in a read, so that it stops in time whatever the peer sends; the end of
-   * the stream, or a frame larger than the buffer, is left to the link's thread.
-   */
-  private String readLent(CompletableFuture<?> reply, long until) {
-    try {
-      while (!link.socketClosed()) {
-        if (input.fillWithoutBlocking()) {
+        if (block ? input.holdsWholeFrame() : input.fillWithoutBlocking()) {
           String why = readOne(true);
           if (why != null) {
             return why;
           }
         } else if (!link.endBurst()) { // what was sent while a burst was handed out leaves now
           return MOVED; // the flush blocked and reading went on in another thread
-        } else if (reply.isDone() || System.nanoTime() - until >= 0) {
-          return null;
-        } else {
+        } else if (reply.isDone() || System.nanoTime() - until >= 0
+            || block && !input.fillWithin(until - System.nanoTime())) {
+          return null; // done, out of time, or left to the link's thread (see fillWithin)
+        } else if (!block) {
           Thread.onSpinWait();
         }
       }
