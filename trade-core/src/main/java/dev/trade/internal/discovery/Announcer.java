@@ -15,6 +15,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.Executor;
 import java.util.concurrent.Executors;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
@@ -169,6 +170,11 @@ final class Announcer {
         // Closed: nothing to announce.
       }
     }
+  }
+
+  /** The scheduler it sends on (given, or its own): the receiver handles datagrams there too. */
+  Executor executor() {
+    return scheduler;
   }
 
   long sentCount() {

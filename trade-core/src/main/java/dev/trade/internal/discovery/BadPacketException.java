@@ -46,7 +46,12 @@ public final class BadPacketException extends Exception {
     /** A timestamp too far from our clock: an old packet replayed, or unsynchronised clocks. */
     CLOCK_SKEW,
     /** One of this container's own announcements, looped back to it. */
-    OWN
+    OWN,
+    /**
+     * Not read at all: {@link Receiver#MAX_WAITING} datagrams were already waiting for this
+     * container to handle them (its JVM is too busy to keep up).
+     */
+    BACKLOG
   }
 
   private final Reason reason;

@@ -70,9 +70,10 @@ public final class Discovery implements AutoCloseable {
   @FunctionalInterface
   public interface Listener {
     /**
-     * Called on the receive thread, one announcement at a time. Return quickly (hand the work to
-     * another thread): while it runs no packet is read, and the kernel drops what does not fit in
-     * its buffer. Called for every accepted announcement, also the periodic repeats of a known
+     * Called on the discovery's scheduler (see {@link Builder#scheduler}), one announcement at a
+     * time. Return quickly: while it runs, this container's further datagrams wait (beyond
+     * {@value Receiver#MAX_WAITING} they are dropped), though other containers' in the JVM do
+     * not. Called for every accepted announcement, also the periodic repeats of a known
      * container. An exception is logged and does not stop discovery.
      *
      * @param from the datagram's source address, for logs; connect to {@code a.addresses()}
@@ -107,13 +108,14 @@ public final class Discovery implements AutoCloseable {
     }
     String tag = "[" + b.containerName + "]";
     this.announcer = new Announcer(b.systemId, b.containerId, b.containerName, key, target,
-        b.addresses, interfaces, senders, b.broadcast, b.scheduler, "trade-discovery-send" + tag);
+        b.addresses, interfaces, senders, b.broadcast, b.scheduler, "trade-discovery" + tag);
+    // Received datagrams are handled where announcements are sent: the container's timer.
     this.receiver = new Receiver(senders, b.systemId, b.containerId, key, b.listener,
         (a, from) -> {
           if (b.answering.test(a.containerId())) {
             announcer.answer(from);
           }
-        }, b.observer, b.maxClockSkew, b.reportInterval, b.discovery);
+        }, b.observer, b.maxClockSkew, b.reportInterval, b.discovery, announcer.executor());
     try {
       receiver.start(family, target, interfaces);
     } catch (IOException | RuntimeException e) {
@@ -340,9 +342,9 @@ public final class Discovery implements AutoCloseable {
     }
 
     /**
-     * Sends announcements on {@code scheduler} instead of a thread of discovery's own; its tasks
-     * must be short (each send is). {@link Discovery#close()} ends discovery's tasks on it but does
-     * not shut it down. Default: a daemon thread of its own.
+     * Sends announcements, and handles the datagrams received, on {@code scheduler} instead of a
+     * thread of discovery's own; its tasks must be short (each send is). {@link Discovery#close()}
+     * ends discovery's tasks on it but does not shut it down. Default: a daemon thread of its own.
      */
     public Builder scheduler(ScheduledExecutorService scheduler) {
       this.scheduler = Objects.requireNonNull(scheduler, "scheduler == null");
@@ -352,7 +354,7 @@ public final class Discovery implements AutoCloseable {
     /**
      * Which newcomers, by container id, this container answers at their first announcement, so
      * that they learn of it at once rather than at its next announcement to the group. Asked on
-     * the receiving thread: it must be quick. Default: every one.
+     * the scheduler, like the listener: it must be quick. Default: every one.
      */
     public Builder answering(Predicate<String> newcomer) {
       this.answering = Objects.requireNonNull(newcomer, "newcomer == null");

@@ -20,8 +20,8 @@ import java.util.concurrent.atomic.LongAdder;
  * by a later one of the same sender, are only counted: every container hears its own, and every
  * start beside others has a few overtaken ones.
  *
- * <p>{@link #record} is called from the receive thread only; {@link #counts()} may be called from
- * any thread.
+ * <p>{@link #record} is called from one receiver's handling only; {@link #counts()} may be called
+ * from any thread.
  */
 final class Drops {
   private static final int MAX_REPORTED = 256;
@@ -30,7 +30,7 @@ final class Drops {
   private final String systemId;
   private final long reportIntervalNanos;
   private final Map<Reason, LongAdder> counts = new EnumMap<>(Reason.class);
-  // Confined to the receive thread; bounded so that a scan from many addresses cannot grow it.
+  // Confined to the receiver's handling; bounded so that a scan from many addresses cannot grow it.
   private final Map<Source, Report> reports = new LinkedHashMap<>(64, 0.75f, true) {
     private static final long serialVersionUID = 1L;
 
@@ -100,6 +100,8 @@ final class Drops {
             + "not TRADE announcements (" + e.getMessage() + "); does another program use it?";
       case CLOCK_SKEW:
         return who + e.getMessage() + "; synchronise the clocks (NTP), or set DISCOVERYCLOCKSKEW";
+      case BACKLOG:
+        return "Discovery of system '" + systemId + "' fell behind: " + e.getMessage();
       default:
         return who + e.reason().name().toLowerCase(Locale.ROOT) + ": " + e.getMessage();
     }

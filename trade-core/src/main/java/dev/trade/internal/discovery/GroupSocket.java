@@ -13,6 +13,7 @@ import java.nio.channels.DatagramChannel;
 import java.nio.channels.SelectionKey;
 import java.nio.channels.Selector;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.Iterator;
 import java.util.List;
@@ -27,7 +28,9 @@ import java.util.concurrent.locks.LockSupport;
  * the kernel delivers wakes a thread: with one socket per container, 25 containers in a JVM woke
  * 25 threads and checked every HMAC 25 times for each announcement of a system of 100. The
  * thread also reads each receiver's own sending sockets, where answers to its announcements
- * arrive, and hands those to that receiver alone.
+ * arrive, and hands those to that receiver alone. It only reads: each receiver handles what it is
+ * handed on its own executor ({@link Receiver#offer}), so that no container's handling holds up
+ * the others'.
  *
  * <p>Opened by the first {@link #join}, closed (socket and thread) by the last {@link #leave}, and
  * only then: the receivers attached have no other ear. A receiver that fails on a datagram does
@@ -202,24 +205,27 @@ final class GroupSocket {
     }
   }
 
+  /**
+   * Hands a datagram to its receivers, which handle it on their own threads: this thread only
+   * reads (see {@link Receiver} for why). One copy of the packet is shared by all of them.
+   */
   private void deliver(Receiver only, ByteBuffer buf, InetSocketAddress from) {
-    byte[] packet = buf.array();
-    int len = buf.position();
+    byte[] packet = Arrays.copyOf(buf.array(), buf.position());
     if (only != null) {
-      deliver(only, packet, len, from, null);
+      deliver(only, packet, from, null);
       return;
     }
     Receiver.Decoded decoded = new Receiver.Decoded(); // shared by receivers of the same system
     for (Receiver r : receivers) {
-      deliver(r, packet, len, from, decoded);
+      deliver(r, packet, from, decoded);
     }
   }
 
   /** Hands a datagram to one receiver; its failure is its own, not the others' nor the socket's. */
-  private static void deliver(Receiver r, byte[] packet, int len, InetSocketAddress from,
+  private static void deliver(Receiver r, byte[] packet, InetSocketAddress from,
       Receiver.Decoded decoded) {
     try {
-      r.received(packet, len, from, decoded);
+      r.offer(packet, from, decoded);
     } catch (RuntimeException e) {
       LOG.log(Level.WARNING, "A discovery receiver failed on a datagram from " + from
           + "; delivery goes on", e);

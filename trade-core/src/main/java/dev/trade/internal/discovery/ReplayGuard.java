@@ -27,7 +27,7 @@ import java.util.Map;
  * (only packets with a valid HMAC get here, so only members of the system can fill the table).
  * A forgotten sender's older packets pass the sequence check again, but not the clock check.
  *
- * <p>Not thread-safe: {@link Discovery} uses it from its receive thread only.
+ * <p>Not thread-safe: a {@link Receiver} uses it from its handling only, one datagram at a time.
  */
 final class ReplayGuard {
   static final int DEFAULT_MAX_SENDERS = 4096;

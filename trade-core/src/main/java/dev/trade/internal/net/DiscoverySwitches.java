@@ -34,7 +34,8 @@ final class DiscoverySwitches implements AutoCloseable {
   private Finder finder;
 
   /**
-   * @param linked whether this container has a link to a container
+   * @param linked whether this container has a link to a container, or a handshake with it under
+   *     way (then it is not dialled)
    * @param reachable how many other containers routing reaches now
    * @param closed whether the container has closed (then no finder is made any more)
    */

@@ -71,6 +71,11 @@ final class LinkSwaps {
     handshaking.merge(peer, 1, Integer::sum);
   }
 
+  /** Whether a handshake with {@code peer} is under way ({@link #begun}, not ended). Any thread. */
+  boolean handshaking(UUID peer) {
+    return handshaking.containsKey(peer);
+  }
+
   /** A handshake {@link #begun} told of ended; then call {@link #settle}. */
   void ended(UUID peer) {
     handshaking.computeIfPresent(peer, (id, n) -> n == 1 ? null : n - 1);

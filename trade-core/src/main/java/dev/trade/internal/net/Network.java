@@ -133,7 +133,11 @@ public final class Network implements AutoCloseable {
             });
           }
         });
-    this.discovery = new DiscoverySwitches(settings, self, name, connector, links::containsKey,
+    // A container whose handshake with this one is under way counts as linked: its link is
+    // registered only when the control thread gets to it, seconds later in a loaded JVM, and a
+    // dial meanwhile made a second link that one side then closed as a duplicate.
+    this.discovery = new DiscoverySwitches(settings, self, name, connector,
+        peer -> links.containsKey(peer) || swaps.handshaking(peer),
         replication::reachableCount, timer, () -> closed);
     registry.addListener(
         (added, removed) -> replication.localChanged(added, removed, this::onControl));

@@ -357,7 +357,7 @@ class DiscoveryTest {
       start("alpha", "s3cret", "b", 7002, rb, b -> b.interval(FAST));
       rb.awaitHeard("a", 3); // the burst and steady announcements, all sent on the timer
       assertFalse(Thread.getAllStackTraces().keySet().stream()
-          .anyMatch(t -> t.getName().equals("trade-discovery-send[name-a]")), "a thread of its own");
+          .anyMatch(t -> t.getName().equals("trade-discovery[name-a]")), "a thread of its own");
       a.close();
       // The burst's one-shot tasks have run by now; the steady task would stay queued for ever.
       Await.until(Duration.ofSeconds(5), () -> timer.getQueue().isEmpty(),

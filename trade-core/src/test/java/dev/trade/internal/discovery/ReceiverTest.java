@@ -12,6 +12,7 @@ import java.net.InetSocketAddress;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.Executor;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
@@ -78,8 +79,43 @@ class ReceiverTest {
     assertEquals(1L, receiver.dropCounts().get(Reason.CLOCK_SKEW));
   }
 
+  /**
+   * Datagrams handed over wait for the receiver's executor, at most {@link Receiver#MAX_WAITING} of
+   * them: a container whose JVM cannot keep up drops the rest, counted, rather than hold an
+   * unbounded queue; the ones kept are all handled, in order, once the executor runs.
+   */
+  @Test
+  void datagramsBeyondTheBacklogAreDroppedCountedAndTheRestHandledInOrder() throws IOException {
+    List<Runnable> tasks = new ArrayList<>();
+    receiver = receiver((a, from, answer) -> delivered.add(a), tasks::add);
+    int extra = 5;
+    for (int seq = 1; seq <= Receiver.MAX_WAITING + extra; seq++) {
+      receiver.offer(announcement("other", seq).encode(KEY), FROM, null);
+    }
+    assertEquals(1, tasks.size(), "one task queued for the whole backlog");
+    assertEquals(List.of(), delivered, "nothing handled on the offering thread");
+    for (int i = 0; i < tasks.size(); i++) { // each task queues the next while some wait
+      tasks.get(i).run();
+    }
+    assertEquals(Receiver.MAX_WAITING, delivered.size());
+    for (int i = 0; i < delivered.size(); i++) {
+      assertEquals(i + 1, delivered.get(i).sequence(), "in the order offered");
+    }
+    assertEquals((long) extra, receiver.dropCounts().get(Reason.BACKLOG));
+    assertEquals(extra, recorder.drops(Reason.BACKLOG));
+    // Handled, the backlog is free again.
+    receiver.offer(announcement("other", 5_000).encode(KEY), FROM, null);
+    tasks.get(tasks.size() - 1).run();
+    assertEquals(Receiver.MAX_WAITING + 1, delivered.size());
+  }
+
   private Receiver receiver(Discovery.Listener listener) throws IOException {
+    return receiver(listener, Runnable::run);
+  }
+
+  private Receiver receiver(Discovery.Listener listener, Executor handler) throws IOException {
     return new Receiver(List.of(), SYSTEM, "me", KEY, listener,
-        (a, from) -> newcomers.incrementAndGet(), recorder, Duration.ofSeconds(30), Duration.ofSeconds(60), true);
+        (a, from) -> newcomers.incrementAndGet(), recorder, Duration.ofSeconds(30),
+        Duration.ofSeconds(60), true, handler);
   }
 }

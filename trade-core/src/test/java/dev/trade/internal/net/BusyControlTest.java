@@ -37,13 +37,7 @@ class BusyControlTest {
     try (Network net = new Network(Settings.fromProperties(p), id, "busy", "host",
         new Registry(id.toString(), "busy", "host"), codec, codec, null)) {
       net.start();
-      assertTrue(net.onControl(() -> {
-        try {
-          release.await();
-        } catch (InterruptedException e) {
-          Thread.currentThread().interrupt();
-        }
-      }));
+      ControlThread.block(net, release);
       try (RawPeer peer = RawPeer.connect(net.listenAddresses().get(0))) {
         peer.handshake("newcomer");
         // Over twice FAILURETIMEOUT: the container pings the link, and reads ours (else it would
