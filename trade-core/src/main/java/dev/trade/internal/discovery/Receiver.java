@@ -267,7 +267,7 @@ final class Receiver {
       }
       waiting.decrementAndGet();
       try {
-        received(w.packet(), w.packet().length, w.from(), w.decoded());
+        received(w);
       } catch (RuntimeException e) {
         // Its failure is its own: the next datagram is handled all the same.
         LOG.log(Level.WARNING, "A discovery receiver failed on a datagram from " + w.from()
@@ -290,11 +290,8 @@ final class Receiver {
     }
   }
 
-  /**
-   * Checks one datagram and passes it on or drops it (see {@link #offer}). On the handler, or
-   * for tests on their own thread.
-   */
-  void received(byte[] packet, int len, InetSocketAddress from, Decoded decoded) {
+  /** Checks one datagram handed over by {@link #offer}, then passes it on or drops it. */
+  private void received(Waiting w) {
     delivering.lock();
     try {
       if (closed) {
@@ -305,7 +302,7 @@ final class Receiver {
         observer.ignored();
         return;
       }
-      handle(packet, len, from, decoded, decoded == null);
+      handle(w.packet(), w.packet().length, w.from(), w.decoded(), w.decoded() == null);
     } finally {
       delivering.unlock();
     }
