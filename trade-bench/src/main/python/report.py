@@ -22,6 +22,11 @@ def load(d, name):
         return json.load(f)
 
 
+
+def span(values):
+    """'lo–hi' of a list of microsecond values, as the tables print them."""
+    return f"{fmt(min(values))}–{fmt(max(values))}"
+
 def fmt(v, digits=1):
     if v is None:
         return "–"
@@ -177,6 +182,12 @@ def main():
               f"{fmt(p(scn, s, 'p999_us'))} | {rfmt(ratio(p(scn, s), p(scn, 'raw-tcp')))} | "
               f"{rfmt(ratio(p(scn, s), p(scn, 'rmi')))} |")
         w("")
+        rounds = lat[scn].get("round_p50_us", {})
+        if rounds.get("trade") and rounds.get("raw-tcp"):
+            # Adjacent rounds share the machine's mood; the spread shows how much a run's ratio owes to it.
+            per = [t / r for t, r in zip(rounds["trade"], rounds["raw-tcp"]) if r]
+            w(f"Per round ({len(per)} rounds, every system in turn): raw TCP's p50 {span(rounds['raw-tcp'])} µs, "
+              f"TRADE's {span(rounds['trade'])} µs; TRADE / raw TCP by round {min(per):.2f}–{max(per):.2f}×.\n")
     if thr:
         w("## Throughput (small calls per second, median of rounds)\n")
         w("1, 16 and 64 threads in the client JVM call `small` as fast as they can for 2 s after 0.5 s "
