@@ -22,10 +22,10 @@ def load(d, name):
         return json.load(f)
 
 
-
 def span(values):
     """'lo–hi' of a list of microsecond values, as the tables print them."""
     return f"{fmt(min(values))}–{fmt(max(values))}"
+
 
 def fmt(v, digits=1):
     if v is None:
