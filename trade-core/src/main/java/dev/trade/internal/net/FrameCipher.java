@@ -1,11 +1,11 @@
 package dev.trade.internal.net;
 
+import dev.trade.internal.crypto.HmacSha256;
 import java.nio.ByteBuffer;
 import java.nio.charset.StandardCharsets;
 import java.security.GeneralSecurityException;
 import java.util.UUID;
 import javax.crypto.Cipher;
-import javax.crypto.Mac;
 import javax.crypto.spec.GCMParameterSpec;
 import javax.crypto.spec.SecretKeySpec;
 
@@ -43,17 +43,12 @@ final class FrameCipher {
    * {@code HMAC-SHA256(key, "TRADE-enc-v1" | from | to | fromNonce | toNonce)}: the key of the
    * direction {@code from → to}.
    */
-  static byte[] derive(byte[] key, UUID from, UUID to, byte[] fromNonce, byte[] toNonce)
-      throws GeneralSecurityException {
-    Mac mac = Mac.getInstance("HmacSHA256");
-    mac.init(new SecretKeySpec(key, "HmacSHA256"));
-    mac.update("TRADE-enc-v1".getBytes(StandardCharsets.US_ASCII));
-    mac.update(ByteBuffer.allocate(32).putLong(from.getMostSignificantBits())
-        .putLong(from.getLeastSignificantBits()).putLong(to.getMostSignificantBits())
-        .putLong(to.getLeastSignificantBits()).array());
-    mac.update(fromNonce);
-    mac.update(toNonce);
-    return mac.doFinal();
+  static byte[] derive(byte[] key, UUID from, UUID to, byte[] fromNonce, byte[] toNonce) {
+    return HmacSha256.of(key, "TRADE-enc-v1".getBytes(StandardCharsets.US_ASCII),
+        ByteBuffer.allocate(32).putLong(from.getMostSignificantBits())
+            .putLong(from.getLeastSignificantBits()).putLong(to.getMostSignificantBits())
+            .putLong(to.getLeastSignificantBits()).array(),
+        fromNonce, toNonce);
   }
 
   /** A plain frame (u32 length | body) as an encrypted one (u32 length | sealed body | tag). */

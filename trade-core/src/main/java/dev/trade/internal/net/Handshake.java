@@ -1,5 +1,7 @@
 package dev.trade.internal.net;
 
+import dev.trade.internal.crypto.HmacSha256;
+
 import java.io.ByteArrayOutputStream;
 import java.io.DataInputStream;
 import java.io.DataOutputStream;
@@ -17,8 +19,6 @@ import java.util.List;
 import java.util.UUID;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
-import javax.crypto.Mac;
-import javax.crypto.spec.SecretKeySpec;
 
 /**
  * The connection handshake: both sides send HELLO (identity and a fresh nonce), then AUTH, an HMAC
@@ -267,20 +267,15 @@ final class Handshake {
    * {@link #ACCEPTED}), sends to {@code receiver}.
    */
   byte[] mac(byte senderRole, byte[] senderNonce, byte[] receiverNonce, UUID sender, UUID receiver) {
-    try {
-      Mac mac = Mac.getInstance("HmacSHA256");
-      mac.init(new SecretKeySpec(key, "HmacSHA256"));
-      mac.update("TRADE-auth-v2".getBytes(StandardCharsets.US_ASCII));
-      mac.update(self.systemId().getBytes(StandardCharsets.UTF_8));
-      mac.update(senderRole);
-      mac.update(uuid(sender));
-      mac.update(uuid(receiver));
-      mac.update(senderNonce);
-      mac.update(receiverNonce);
-      return mac.doFinal();
-    } catch (GeneralSecurityException e) {
-      throw new IllegalStateException("HmacSHA256 is part of every JDK", e);
-    }
+    return new HmacSha256(key)
+        .update("TRADE-auth-v2".getBytes(StandardCharsets.US_ASCII))
+        .update(self.systemId().getBytes(StandardCharsets.UTF_8))
+        .update(senderRole)
+        .update(uuid(sender))
+        .update(uuid(receiver))
+        .update(senderNonce)
+        .update(receiverNonce)
+        .doFinal();
   }
 
   /** {@code SHA-256("TRADE-credentials-v1" 0x00 systemId 0x00 credentials)}. */
