@@ -9,7 +9,7 @@ import java.security.NoSuchAlgorithmException;
  * HmacCore} also runs a {@code MessageDigest} over the key's inner and outer pads).
  *
  * <p>Why not that {@code Mac}: its first use in a JVM sets up {@code javax.crypto} (the JCE reads
- * the crypto policy and checks its providers), 40-55 ms of CPU on the benchmark machine even after
+ * the crypto policy and checks its providers), 40-59 ms on the benchmark machine even after
  * the JCA itself is up, and a starting container signs its first announcement and proves its
  * credentials on its first link before anything else can reach it. A {@code MessageDigest} costs
  * under 1 ms once the JCA is up, which the container's id (a {@code SecureRandom}) needs anyway.
