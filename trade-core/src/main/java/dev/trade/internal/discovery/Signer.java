@@ -3,11 +3,11 @@ package dev.trade.internal.discovery;
 import dev.trade.internal.crypto.HmacSha256;
 
 /**
- * HMAC-SHA256 with one system's key, set up once: hashing the key's pads costs as much as the
- * HMAC of a packet itself, and a container in a system of 100 verifies dozens of announcements a
- * second while they start. It is set up at the first packet, on the thread that sends or receives,
- * not by the constructor: the JCA's first use in a JVM takes tens of milliseconds that a starting
- * container need not wait for.
+ * HMAC-SHA256 with one system's key, set up once (the digest's provider lookup and the key's
+ * pads), since a container in a system of 100 verifies dozens of announcements a second while they
+ * start. It is set up at the first packet, on the thread that sends or receives, not by the
+ * constructor: the JCA's first use in a JVM takes tens of milliseconds that a starting container
+ * need not wait for.
  *
  * <p>Not thread-safe: each sending or receiving thread keeps its own.
  */

@@ -1,7 +1,6 @@
 package dev.trade.internal.net;
 
 import dev.trade.internal.crypto.HmacSha256;
-
 import java.io.ByteArrayOutputStream;
 import java.io.DataInputStream;
 import java.io.DataOutputStream;
