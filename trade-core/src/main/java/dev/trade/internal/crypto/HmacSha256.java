@@ -18,8 +18,6 @@ import java.security.NoSuchAlgorithmException;
  * this instance for the next message with the same key. Not thread-safe: one thread at a time.
  */
 public final class HmacSha256 {
-  /** Bytes in an HMAC-SHA256. */
-  public static final int LENGTH = 32;
   private static final int BLOCK = 64; // SHA-256's block size
 
   private final MessageDigest digest;
