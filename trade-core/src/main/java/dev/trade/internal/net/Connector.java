@@ -9,7 +9,6 @@ import java.net.NetworkInterface;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.net.SocketException;
-import java.net.SocketTimeoutException;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
@@ -265,9 +264,10 @@ final class Connector {
       throws IOException, Handshake.Failure {
     socket.setTcpNoDelay(true);
     socket.setKeepAlive(true);
-    socket.setSoTimeout(connectTimeoutMs);
-    // SO_TIMEOUT bounds each read, not the handshake: a peer that sends a byte now and then would
-    // hold this thread for hours. Closing the socket at the deadline bounds all of it.
+    // Closing the socket at the deadline bounds the whole handshake, also against a peer that
+    // sends a byte now and then. No SO_TIMEOUT besides: a timed read switches the JDK's socket to
+    // non-blocking mode for good, and the link's thread would then make three system calls (a read
+    // that finds nothing, poll, the read) each time it runs dry instead of one blocking read.
     AtomicBoolean settled = new AtomicBoolean(); // by the deadline or by the end of the handshake
     ScheduledFuture<?> deadline;
     try {
@@ -306,14 +306,14 @@ final class Connector {
           e.getMessage());
       throw e;
     } catch (IOException e) {
-      throw e instanceof SocketTimeoutException || !settled.compareAndSet(false, true) ? tooSlow() : e;
+      // Failed because the deadline closed the socket, or failed on its own first.
+      throw settled.compareAndSet(false, true) ? e : tooSlow();
     } finally {
       deadline.cancel(false);
     }
     if (!settled.compareAndSet(false, true)) {
       throw tooSlow(); // the deadline closed the socket just now
     }
-    socket.setSoTimeout(0); // from now on heartbeats tell a silent peer
     sink.linked(socket, peer, initiatedHere);
   }
 
