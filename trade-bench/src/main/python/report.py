@@ -165,6 +165,8 @@ def main():
     for name, v, ok, f in goals:
         w(f"| {name} | {'–' if v is None else f(v)} | {'–' if v is None else ('met' if ok(v) else '**missed**')} |")
     w("")
+    w("Why a goal is missed, in short, and what was measured and tried: "
+      "[What the goals came to](#what-the-goals-came-to-and-why-some-are-missed).\n")
     w("## Latency of one call (one caller, µs)\n")
     w("Each server in its own JVM, one client JVM for all; loopback; every system answers "
       "`small(int) → boolean` and `consume(byte[]) → int` (the argument's length). "
