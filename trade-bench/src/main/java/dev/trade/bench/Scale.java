@@ -18,11 +18,17 @@ import java.util.concurrent.ThreadLocalRandom;
  * <p>Each size runs {@code -Dbench.scaleRuns} times (3, or 1 for a quick run), each a new system
  * of new JVMs: one run's convergence time varies by a third from run to run on a loaded 2-core
  * machine, so the report judges the median.
+ *
+ * <p>Each run then closes its containers and builds them again in the same JVMs, as a new system
+ * ({@code -Dbench.scaleWarm=false} skips this): the same work with the JIT's compilation of it
+ * mostly done, which tells how much of the first round was the JVMs warming up. The goal is judged
+ * on the first round, the containers a JVM starts with.
  */
 final class Scale {
   static final int PER_JVM = 25;
   private final Path logs;
   private final boolean quick;
+  private final boolean warmRound = Boolean.parseBoolean(System.getProperty("bench.scaleWarm", "true"));
 
   Scale(Path logs, boolean quick) {
     this.logs = logs;
@@ -68,50 +74,8 @@ final class Scale {
       for (Jvm j : jvms) {
         j.await("READY", 60_000);
       }
-      long go = Clock.epochMicros();
-      for (Jvm j : jvms) {
-        j.send("GO");
-      }
-      long last = 0;
-      long built = 0;
-      boolean converged = true;
-      StringBuilder problems = new StringBuilder();
-      for (int k = 0; k < jvms.size(); k++) {
-        String line;
-        try {
-          line = jvms.get(k).await("", 90_000);
-          if (line.startsWith("BUILT")) {
-            built = Math.max(built, Long.parseLong(line.substring(6).trim()));
-            line = jvms.get(k).await("", 90_000);
-          }
-        } catch (IOException e) {
-          line = "JVM " + k + ": " + e.getMessage();
-        }
-        if (line.startsWith("CONVERGED")) {
-          last = Math.max(last, Long.parseLong(line.substring(10).trim()));
-        } else {
-          converged = false;
-          problems.append(line.length() > 300 ? line.substring(0, 300) + "..." : line).append("; ");
-        }
-      }
-      // CPU first, from every JVM at once: the work until convergence, not the full collections
-      // of the heap measurement below.
-      long cpuMillis = 0;
-      for (Jvm j : jvms) {
-        try {
-          j.send("CPU");
-        } catch (IOException e) {
-          // Its answer is missed below.
-        }
-      }
-      for (int k = 0; k < jvms.size(); k++) {
-        try {
-          cpuMillis += Long.parseLong(jvms.get(k).await("CPU", 60_000));
-        } catch (IOException e) {
-          problems.append("JVM ").append(k).append(" gave no CPU figure: ").append(e.getMessage())
-              .append("; ");
-        }
-      }
+      Round cold = go(jvms);
+      StringBuilder problems = new StringBuilder(cold.problems);
       List<long[]> heaps = new ArrayList<>();
       for (int k = 0; k < jvms.size(); k++) {
         try {
@@ -124,6 +88,24 @@ final class Scale {
           problems.append("JVM ").append(k).append(" (").append(counts.get(k))
               .append(k == 0 ? " container, -Xmx16m" : " containers").append(") gave no heap figure: ")
               .append(e.getMessage()).append("; ");
+        }
+      }
+      // The same round again in the same JVMs, as a new system: their JIT has compiled what
+      // converging runs, so this tells how much of the first round was the JVMs' warming up.
+      Round warm = null;
+      if (warmRound) {
+        String again = "AGAIN " + sysId + "-warm "
+            + (40_000 + ThreadLocalRandom.current().nextInt(20_000));
+        try {
+          for (Jvm j : jvms) {
+            j.send(again);
+          }
+          for (Jvm j : jvms) {
+            j.await("READY", 60_000);
+          }
+          warm = go(jvms);
+        } catch (IOException e) {
+          problems.append("the warm round did not start: ").append(e.getMessage()).append("; ");
         }
       }
       long bigHeap = 0;
@@ -147,9 +129,9 @@ final class Scale {
       json.begin();
       json.field("containers", n);
       json.field("jvms", jvms.size());
-      json.field("converged", converged);
-      json.field("convergence_ms", converged ? (last - go) / 1e3 : null);
-      json.field("all_built_ms", built == 0 ? null : (built - go) / 1e3);
+      json.field("converged", cold.converged);
+      json.field("convergence_ms", cold.convergenceMs());
+      json.field("all_built_ms", cold.builtMs());
       json.field("problems", problems.toString());
       json.field("heap_per_container_mb", bigCount == 0 ? null : Math.round(bigHeap / (double) bigCount / 1e4) / 100.0);
       json.field("single_container_jvm_xmx16m_heap_mb",
@@ -161,15 +143,91 @@ final class Scale {
       json.field("most_links", mostLinks);
       // All JVMs' CPU time from GO until every one converged: the work converging took, which a
       // busy machine stretches less than the wall-clock time.
-      json.field("cpu_seconds", Math.round(cpuMillis / 100.0) / 10.0);
+      json.field("cpu_seconds", cold.cpuSeconds());
+      if (warm != null) {
+        json.field("warm_converged", warm.converged);
+        json.field("warm_convergence_ms", warm.convergenceMs());
+        json.field("warm_all_built_ms", warm.builtMs());
+        json.field("warm_cpu_seconds", warm.cpuSeconds());
+        json.field("warm_problems", warm.problems);
+      }
       json.end();
       System.err.printf("scale %d: converged=%s in %.0f ms, heap/container %.2f MB, threads %d, links/container %.1f %s%n",
-          n, converged, (last - go) / 1e3, bigCount == 0 ? -1 : bigHeap / (double) bigCount / 1e6, threads,
+          n, cold.converged, cold.convergenceMs(), bigCount == 0 ? -1 : bigHeap / (double) bigCount / 1e6, threads,
           links / (double) n, problems);
+      if (warm != null) {
+        System.err.printf("scale %d warm: converged=%s in %.0f ms, %.1f CPU-s %s%n", n,
+            warm.converged, warm.convergenceMs(), warm.cpuSeconds(), warm.problems);
+      }
     } finally {
       for (Jvm j : jvms) {
         j.close();
       }
     }
+  }
+
+  /** What one round measured; times in epoch µs. */
+  private record Round(long go, long built, long last, boolean converged, long cpuMillis,
+      String problems) {
+    Double convergenceMs() {
+      return converged ? (last - go) / 1e3 : null;
+    }
+
+    Double builtMs() {
+      return built == 0 ? null : (built - go) / 1e3;
+    }
+
+    double cpuSeconds() {
+      return Math.round(cpuMillis / 100.0) / 10.0;
+    }
+  }
+
+  /** Sends GO to every JVM and waits for each to converge (or give up), then asks their CPU. */
+  private static Round go(List<Jvm> jvms) throws IOException, InterruptedException {
+    long go = Clock.epochMicros();
+    for (Jvm j : jvms) {
+      j.send("GO");
+    }
+    long last = 0;
+    long built = 0;
+    boolean converged = true;
+    StringBuilder problems = new StringBuilder();
+    for (int k = 0; k < jvms.size(); k++) {
+      String line;
+      try {
+        line = jvms.get(k).await("", 90_000);
+        if (line.startsWith("BUILT")) {
+          built = Math.max(built, Long.parseLong(line.substring(6).trim()));
+          line = jvms.get(k).await("", 90_000);
+        }
+      } catch (IOException e) {
+        line = "JVM " + k + ": " + e.getMessage();
+      }
+      if (line.startsWith("CONVERGED")) {
+        last = Math.max(last, Long.parseLong(line.substring(10).trim()));
+      } else {
+        converged = false;
+        problems.append(line.length() > 300 ? line.substring(0, 300) + "..." : line).append("; ");
+      }
+    }
+    // CPU first, from every JVM at once: the work until convergence, not the full collections
+    // of the heap measurement below.
+    long cpuMillis = 0;
+    for (Jvm j : jvms) {
+      try {
+        j.send("CPU");
+      } catch (IOException e) {
+        // Its answer is missed below.
+      }
+    }
+    for (int k = 0; k < jvms.size(); k++) {
+      try {
+        cpuMillis += Long.parseLong(jvms.get(k).await("CPU", 60_000));
+      } catch (IOException e) {
+        problems.append("JVM ").append(k).append(" gave no CPU figure: ").append(e.getMessage())
+            .append("; ");
+      }
+    }
+    return new Round(go, built, last, converged, cpuMillis, problems.toString());
   }
 }

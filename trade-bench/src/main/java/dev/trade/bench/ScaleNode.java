@@ -26,7 +26,10 @@ import java.util.concurrent.Future;
  * used since GO. Then, asked {@code HEAP}, it prints
  * {@code HEAP <baseline> <after> <threads> <links> <most links>}: heap in use after full GCs
  * before the containers were built and with them running, and the links its containers hold, in
- * all and the most one of them holds. Exits when standard input closes (at most 10 min).
+ * all and the most one of them holds. Then {@code AGAIN <system id> <port>} closes them, prints
+ * {@code READY} and runs the same round (GO, BUILT, CONVERGED, CPU) as a new system in this JVM,
+ * whose JIT has compiled what the first round ran. Exits when standard input closes (at most
+ * 10 min).
  *
  * <p>With {@code -Dbench.progress=true} it also writes to standard error (the JVM's log) how long
  * each container took to build and register, and once a second until convergence how many
@@ -93,12 +96,57 @@ public final class ScaleNode {
     BufferedReader in = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8));
     System.out.println("READY");
     System.out.flush();
-    if (!"GO".equals(in.readLine())) {
+    List<TRADEContainer> containers = round(in, sysId, port, count, total, prefix);
+    if (containers == null || !"HEAP".equals(in.readLine())) {
       return;
+    }
+    long after = usedHeapAfterGc();
+    int links = 0;
+    int mostLinks = 0;
+    for (TRADEContainer c : containers) {
+      int n = c.getNeighbours().size();
+      links += n;
+      mostLinks = Math.max(mostLinks, n);
+    }
+    System.out.println("HEAP " + baseline + " " + after + " "
+        + ManagementFactory.getThreadMXBean().getThreadCount() + " " + links + " " + mostLinks);
+    System.out.flush();
+    for (String line; (line = in.readLine()) != null; ) {
+      // AGAIN <system id> <port>: the same round once more, in this JVM whose JIT has now compiled
+      // what converging runs, as a new system beside the closed one.
+      if (line.startsWith("AGAIN ")) {
+        for (TRADEContainer c : containers) {
+          c.close();
+        }
+        String[] a = line.split(" ");
+        usedHeapAfterGc();
+        System.out.println("READY");
+        System.out.flush();
+        containers = round(in, a[1], a[2], count, total, prefix);
+        if (containers == null) {
+          return;
+        }
+      }
+    }
+    for (TRADEContainer c : containers) {
+      c.close();
+    }
+    System.exit(0);
+  }
+
+  /**
+   * One round: on {@code GO} builds the containers, reports {@code BUILT} and {@code CONVERGED} (or
+   * {@code TIMEOUT}), then on {@code CPU} the CPU time since {@code GO}. Returns the containers, or
+   * null when the input ended or said something else.
+   */
+  private static List<TRADEContainer> round(BufferedReader in, String sysId, String port,
+      int count, int total, String prefix) throws Exception {
+    if (!"GO".equals(in.readLine())) {
+      return null;
     }
     // One after the other unless told otherwise, as the published figures were always measured:
     // started all at once, 25 containers per JVM on 2 cores once left some of them without any
-    // other container's service after a minute (see docs/benchmarks.md, "Started together").
+    // other container's service after a minute (see docs/benchmarks-log.md, "Started together").
     List<TRADEContainer> containers = new ArrayList<>();
     boolean progress = Boolean.getBoolean("bench.progress");
     long go = System.nanoTime();
@@ -188,31 +236,11 @@ public final class ScaleNode {
     // (asked one after the other for their heaps, the later ones would count the time the
     // earlier ones spend in full collections).
     if (!"CPU".equals(in.readLine())) {
-      return;
+      return null;
     }
     System.out.println("CPU " + (processCpuNanos() - goCpu) / 1_000_000);
     System.out.flush();
-    if (!"HEAP".equals(in.readLine())) {
-      return;
-    }
-    long after = usedHeapAfterGc();
-    int links = 0;
-    int mostLinks = 0;
-    for (TRADEContainer c : containers) {
-      int n = c.getNeighbours().size();
-      links += n;
-      mostLinks = Math.max(mostLinks, n);
-    }
-    System.out.println("HEAP " + baseline + " " + after + " "
-        + ManagementFactory.getThreadMXBean().getThreadCount() + " " + links + " " + mostLinks);
-    System.out.flush();
-    while (in.readLine() != null) {
-      // Keep the containers up until the parent closes our input.
-    }
-    for (TRADEContainer c : containers) {
-      c.close();
-    }
-    System.exit(0);
+    return containers;
   }
 
   /** A container of the system {@code sysId}, discovering on loopback at {@code port}. */
