@@ -10,7 +10,7 @@ import dev.trade.internal.registry.ServiceDescriptor;
  * <p>A call that arrived from another container carries the caller's deadline. A call made in
  * this container has a timeout instead and fixes its deadline when a link first asks for it: the
  * clock is read only if someone needs it, because reading it costs about as much as the rest of a
- * local call (docs/benchmarks.md) and a local invocation is not timed.
+ * local call (docs/benchmarks-log.md) and a local invocation is not timed.
  */
 public final class Invocation {
   private final ServiceDescriptor service;

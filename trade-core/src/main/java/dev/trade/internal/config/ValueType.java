@@ -6,7 +6,7 @@ package dev.trade.internal.config;
  *
  * <p>A switch rather than a parser object per key: the settings are the first thing a container
  * builds, and each method reference would be a class generated at run time in every JVM that
- * starts one (see docs/benchmarks.md, "Start → callable").
+ * starts one (see docs/benchmarks-log.md, "Start → callable").
  */
 enum ValueType {
   TEXT, CONTAINER_NAME, SYSTEM_ID, BOOL, MULTICAST, PORT, MILLIS, MILLIS_OR_ZERO, LISTEN_ADDRESSES,

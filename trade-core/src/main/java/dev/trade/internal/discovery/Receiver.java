@@ -38,7 +38,7 @@ import java.util.function.BiConsumer;
  * for want of room in the socket's buffer. Its own work was small (about 0.1 ms of CPU per
  * datagram for all 25); what held it up were the hand-offs each listener makes (a dial starts a
  * thread, a choice wakes a timer), each a wait for a core on a loaded machine, one container after
- * the other (docs/benchmarks.md, "100 containers").
+ * the other (docs/benchmarks-log.md, "100 containers").
  *
  * <p>Shaped like JGroups' MPING. A bad packet is counted and skipped, never fatal. Thread-safe;
  * the replay table and the log limiter are confined to the delivering thread (one at a time).

@@ -9,7 +9,7 @@ import java.util.concurrent.TimeUnit;
 /**
  * Fails the remote calls whose deadline has passed. Their callers wait without a timeout: a timed
  * wait arms a kernel timer for every call, which cost about 5 % of the calls 64 callers make in a
- * second (docs/benchmarks.md). Instead a sweep on the container's timer, every {@link #TICK_MS}
+ * second (docs/benchmarks-log.md). Instead a sweep on the container's timer, every {@link #TICK_MS}
  * while calls are pending, completes each overdue one with its timeout, so a call fails at most a
  * tick after its deadline. The sweep stops after a second without pending calls and starts again
  * with the next call.

@@ -57,7 +57,7 @@ record Snapshot(List<Entry> ordered, Map<String, List<Entry>> byName, Map<Snapsh
   /**
    * A service's identity as a map key. A class rather than a record: a record's equals and
    * hashCode are generated at run time on first use, which costs a starting container about 20
-   * method-handle classes (see docs/benchmarks.md, "Start → callable").
+   * method-handle classes (see docs/benchmarks-log.md, "Start → callable").
    */
   static final class Key {
     private final String containerId;
