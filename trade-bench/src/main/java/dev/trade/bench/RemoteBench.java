@@ -8,6 +8,7 @@ import java.util.Map;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.locks.LockSupport;
 
 /**
  * Remote calls side by side: each system's server runs in its own JVM, this JVM is the client of
@@ -16,8 +17,12 @@ import java.util.concurrent.atomic.AtomicLong;
  * all systems alike; throughput likewise, per number of concurrent callers.
  */
 final class RemoteBench {
-  /** One latency scenario: a payload, how many calls per round, how long a round may take. */
-  private record Scenario(String name, int payload, int warmCalls, int callsPerRound, long roundLimitMs) {}
+  /**
+   * One latency scenario: a payload, how many calls per round, how long a round may take, and the
+   * period at which calls start (0: each as soon as the one before returned).
+   */
+  private record Scenario(String name, int payload, int warmCalls, int callsPerRound,
+      long roundLimitMs, long periodMicros) {}
 
   private final Path logs;
   private final boolean quick;
@@ -34,9 +39,11 @@ final class RemoteBench {
   private List<Scenario> scenarios() {
     int f = quick ? 10 : 1;
     return List.of(
-        new Scenario("small", 0, 20_000 / f, 2_000 / f, 3_000),
-        new Scenario("1KB", 1024, 10_000 / f, 2_000 / f, 3_000),
-        new Scenario("1MB", 1 << 20, 100 / f, 30 / Math.min(f, 3), 5_000));
+        new Scenario("small", 0, 20_000 / f, 2_000 / f, 3_000, 0),
+        new Scenario("1KB", 1024, 10_000 / f, 2_000 / f, 3_000, 0),
+        new Scenario("1MB", 1 << 20, 100 / f, 30 / Math.min(f, 3), 5_000, 0),
+        // A control loop's calls: one every millisecond, every thread idle in between.
+        new Scenario("small_every_1ms", 0, 20_000 / f, 300 / f, 3_000, 1_000));
   }
 
   void run(Json json) throws Exception {
@@ -127,8 +134,16 @@ final class RemoteBench {
         String s = systems.get((k + r) % systems.size());
         Rpc rpc = clients.get(s);
         Stats round = new Stats(sc.callsPerRound);
-        long limit = System.nanoTime() + sc.roundLimitMs * 1_000_000L;
+        long start = System.nanoTime();
+        long limit = start + sc.roundLimitMs * 1_000_000L;
         for (int i = 0; i < sc.callsPerRound && System.nanoTime() < limit; i++) {
+          if (sc.periodMicros > 0) {
+            // Starts on a fixed schedule: a late call does not push the later ones back.
+            long due = start + (i + 1) * sc.periodMicros * 1_000L;
+            for (long left; (left = due - System.nanoTime()) > 0; ) {
+              LockSupport.parkNanos(left);
+            }
+          }
           long t0 = System.nanoTime();
           call(rpc, data, i);
           long dt = System.nanoTime() - t0;
