@@ -71,9 +71,108 @@ final class Overlay {
     return result;
   }
 
-  /** Whether {@code chooser}, linked to no one yet, dials {@code peer} when it knows {@code members}. */
+  /**
+   * Whether {@code chooser}, linked to no one yet, dials {@code peer} when it knows {@code members}:
+   * {@code chosen(chooser, members, Set.of()).contains(peer)}, computed without sorting the ring or
+   * building the choice. Every container runs this for each newcomer it hears (whether to answer
+   * it), with the system's whole membership; sorting it each time was 3 % of a scale JVM's CPU.
+   *
+   * @param members distinct ids (a set's elements), with or without {@code chooser} and {@code peer}
+   */
   static boolean chooses(UUID chooser, UUID peer, Collection<UUID> members) {
-    return chosen(chooser, members, Set.of()).contains(peer);
+    UUID[] ids = members.toArray(new UUID[0]);
+    boolean hasPeer = false;
+    int n = 1; // the ring: ids and chooser
+    for (UUID id : ids) {
+      if (!id.equals(chooser)) {
+        n++;
+        hasPeer |= id.equals(peer);
+      }
+    }
+    if (!hasPeer) {
+      return false;
+    }
+    if (n <= FULL_MESH_MAX) {
+      return true;
+    }
+    // A successor: fewer than SUCCESSORS others lie clockwise between chooser and peer.
+    int closer = 0;
+    for (UUID id : ids) {
+      if (!id.equals(chooser) && !id.equals(peer) && ahead(chooser, id, peer)) {
+        closer++;
+      }
+    }
+    if (closer < SUCCESSORS) {
+      return true;
+    }
+    int intervals = 32 - Integer.numberOfLeadingZeros(n - 1);
+    for (int i = 1; i <= intervals; i += 2) {
+      if (isFinger(chooser, peer, ids, i)) {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  /**
+   * Whether {@code peer} is {@code self}'s finger for interval {@code i} ({@link #finger}, linked to
+   * none). Going clockwise from the interval's start, the interval's containers are the ids before
+   * the first that is outside it (self is, always), and the finger is the one of them at the hashed
+   * position; when there are none, the first id from the start, which then lies outside.
+   */
+  private static boolean isFinger(UUID self, UUID peer, UUID[] ids, int i) {
+    UUID from = new UUID(self.getMostSignificantBits() + (1L << (64 - i)), self.getLeastSignificantBits());
+    long width = 1L << (64 - i);
+    if (!inInterval(peer, self, from, width)) {
+      for (UUID id : ids) {
+        if (ahead(from, id, peer)) {
+          return false; // not the first from the start
+        }
+      }
+      return ahead(from, peer, self);
+    }
+    UUID firstOut = self;
+    for (UUID id : ids) {
+      if (!inInterval(id, self, from, width) && ahead(from, id, firstOut)) {
+        firstOut = id;
+      }
+    }
+    if (!ahead(from, peer, firstOut)) {
+      return false;
+    }
+    int inside = 0;
+    int before = 0; // of them, the ones clockwise from the start before peer
+    for (UUID id : ids) {
+      if (inInterval(id, self, from, width) && ahead(from, id, firstOut)) {
+        inside++;
+        if (ahead(from, id, peer)) {
+          before++;
+        }
+      }
+    }
+    long h = (self.getLeastSignificantBits() ^ self.getMostSignificantBits()) * 0x9E3779B97F4A7C15L + i;
+    return before == Long.remainderUnsigned(h ^ (h >>> 29), inside);
+  }
+
+  /** The condition {@link #finger} stops at: {@code id} is self, or at or beyond the interval's end. */
+  private static boolean inInterval(UUID id, UUID self, UUID from, long width) {
+    return !id.equals(self)
+        && Long.compareUnsigned(id.getMostSignificantBits() - from.getMostSignificantBits(), width) < 0;
+  }
+
+  /**
+   * Whether {@code a} comes before {@code b} going clockwise round the id space from {@code origin}
+   * (an id equal to the origin first of all): their distances from it, as unsigned 128-bit numbers.
+   */
+  private static boolean ahead(UUID origin, UUID a, UUID b) {
+    long oHi = origin.getMostSignificantBits();
+    long oLo = origin.getLeastSignificantBits();
+    long aLo = a.getLeastSignificantBits() - oLo;
+    long aHi = a.getMostSignificantBits() - oHi - (Long.compareUnsigned(a.getLeastSignificantBits(), oLo) < 0 ? 1 : 0);
+    long bLo = b.getLeastSignificantBits() - oLo;
+    long bHi = b.getMostSignificantBits() - oHi - (Long.compareUnsigned(b.getLeastSignificantBits(), oLo) < 0 ? 1 : 0);
+    int c = Long.compareUnsigned(aHi, bHi);
+    return c != 0 ? c < 0 : Long.compareUnsigned(aLo, bLo) < 0;
   }
 
   /** The finger for the interval [2^(128-i), 2^(129-i)) ahead of {@code self}. */

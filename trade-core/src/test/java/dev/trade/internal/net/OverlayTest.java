@@ -106,6 +106,51 @@ class OverlayTest {
     }
   }
 
+  /**
+   * {@link Overlay#chooses} computes without sorting what {@link Overlay#chosen} computes by
+   * sorting the ring: compared over random systems and over ids placed where the rule's edges
+   * are, on the interval bounds of a chooser (the same high half with a smaller or larger low
+   * half), clustered in one interval, and equal in their high halves.
+   */
+  @Test
+  void choosesAgreesWithTheChoiceItPredicts() {
+    Random r = new Random(11);
+    int compared = 0;
+    for (int system = 0; system < 300; system++) {
+      int n = system < 100 ? 1 + system % 20 : 9 + r.nextInt(system < 280 ? 60 : 200);
+      List<UUID> members = ids(n, r.nextLong());
+      UUID anchor = members.get(0);
+      for (int k = 0; k < n / 3; k++) {
+        int i = 1 + r.nextInt(8);
+        long bound = anchor.getMostSignificantBits() + (1L << (64 - i)) + r.nextInt(3) - 1;
+        long low = anchor.getLeastSignificantBits() + r.nextInt(3) - 1;
+        switch (r.nextInt(4)) {
+          case 0 -> members.add(new UUID(bound, low)); // on an interval's start
+          case 1 -> members.add(new UUID(bound + (1L << (63 - i)), r.nextLong())); // inside one
+          case 2 -> members.add(new UUID(anchor.getMostSignificantBits(), r.nextLong()));
+          default -> members.add(new UUID(r.nextLong() >>> 60 << 60, r.nextLong()));
+        }
+      }
+      List<UUID> distinct = new ArrayList<>(new HashSet<>(members));
+      Collections.shuffle(distinct, r);
+      UUID outsider = new UUID(r.nextLong(), r.nextLong());
+      for (UUID chooser : distinct.subList(0, Math.min(distinct.size(), 12))) {
+        List<UUID> withoutChooser = new ArrayList<>(distinct);
+        withoutChooser.remove(chooser);
+        Set<UUID> chosen = Overlay.chosen(chooser, distinct, Set.of());
+        for (UUID peer : distinct) {
+          assertEquals(chosen.contains(peer), Overlay.chooses(chooser, peer, distinct),
+              chooser + " choosing " + peer + " out of " + distinct);
+          assertEquals(chosen.contains(peer), Overlay.chooses(chooser, peer, withoutChooser),
+              chooser + " choosing " + peer + " out of the others " + withoutChooser);
+          compared++;
+        }
+        assertFalse(Overlay.chooses(chooser, outsider, distinct), "not a member");
+      }
+    }
+    assertTrue(compared > 20_000, "compared " + compared);
+  }
+
   @Test
   void largeSystemsHaveLogarithmicDegreeAndDiameterAndAreConnected() {
     for (int n : new int[] {9, 10, 17, 30, 64, 100, 333, 1000}) {
