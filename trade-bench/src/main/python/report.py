@@ -11,7 +11,8 @@ import sys
 
 SYSTEMS = ["raw-tcp", "rmi", "grpc", "jgroups", "trade"]
 LABELS = {"raw-tcp": "raw TCP", "rmi": "JDK RMI", "grpc": "gRPC-java", "jgroups": "JGroups", "trade": "TRADE"}
-COLORS = {"raw-tcp": "#888888", "rmi": "#4e79a7", "grpc": "#f28e2b", "jgroups": "#59a14f", "trade": "#e15759"}
+COLORS = {"raw-tcp": "#888888", "rmi": "#4e79a7", "grpc": "#f28e2b", "jgroups": "#59a14f", "trade": "#e15759",
+          "first round": "#e15759", "warm round": "#f1a7a8"}
 
 
 def load(d, name):
@@ -67,7 +68,7 @@ def svg_bars(groups, series, values, title, unit, path, log=False):
             y += bar
         y += gap
     out.append(f'<text x="{left}" y="{height - 10}" font-size="10" fill="#555">'
-               f'{"log scale; " if log else ""}shorter is {"better" if unit.strip() in ("µs", "ms") else "worse"}</text>')
+               f'{"log scale; " if log else ""}shorter is {"better" if unit.strip() in ("µs", "ms", "s") else "worse"}</text>')
     out.append("</svg>")
     with open(path, "w") as f:
         f.write("\n".join(out) + "\n")
@@ -270,6 +271,7 @@ def main():
           "median. *Warm round*: each run then closes its containers and builds them again, as a new "
           "system, in the same JVMs, whose JIT has by then compiled what converging runs; the same "
           "figures for that round (the goal's JVMs are those of the first round, started for it).\n")
+        w("![convergence](benchmarks-scale.svg)\n")
         w("| containers | run | JVMs | all built after | converged after | heap per container | the -Xmx16m JVM: its container / whole heap | CPU (all JVMs) | threads (all JVMs) | links per container: mean / most | warm round: all built / converged / CPU |")
         w("|---|---|---|---|---|---|---|---|---|---|---|")
         def warm(s):
@@ -311,11 +313,27 @@ def main():
         for s in systems:
             vals[(f"{scn} p50", s)] = p(scn, s)
             vals[(f"{scn} p99", s)] = p(scn, s, "p99_us")
-    svg_bars(["small p50", "small p99", "1KB p50", "1KB p99"], systems, vals,
+    rows = ["small p50", "small p99", "1KB p50", "1KB p99"]
+    if "small_every_1ms" in lat:
+        rows.append("every 1 ms p50")
+        for s in systems:
+            vals[("every 1 ms p50", s)] = p("small_every_1ms", s)
+    svg_bars(rows, systems, vals,
              "Latency of one remote call (µs, log scale)", " µs", os.path.join(docs, "benchmarks-latency.svg"), log=True)
     tv = {(f"{n} caller{'s' if n > 1 else ''}", s): tp(n, s) for n in (1, 16, 64) for s in systems}
     svg_bars([f"{n} caller{'s' if n > 1 else ''}" for n in (1, 16, 64)], systems, tv,
              "Throughput of small calls (calls/s)", "/s", os.path.join(docs, "benchmarks-throughput.svg"))
+    if sizes:
+        conv = {}
+        seconds = lambda ms: None if ms == float("inf") else ms / 1000  # a median that did not converge
+        for n, runs in sizes.items():
+            conv[(f"{n} containers", "first round")] = seconds(statistics.median(converged_ms(r) for r in runs))
+            warm = [r for r in runs if "warm_converged" in r]
+            if warm:
+                conv[(f"{n} containers", "warm round")] = seconds(statistics.median(warm_ms(r) for r in warm))
+        svg_bars([f"{n} containers" for n in sorted(sizes)], ["first round", "warm round"], conv,
+                 "Time until every container sees every service (s, median; goal at 100: 10 s)", " s",
+                 os.path.join(docs, "benchmarks-scale.svg"))
 
 
 if __name__ == "__main__":
