@@ -119,7 +119,7 @@ public final class ScaleNode {
           c.close();
         }
         String[] a = line.split(" ");
-        usedHeapAfterGc();
+        usedHeapAfterGc(); // the closed system's garbage, collected before GO as for the first round
         System.out.println("READY");
         System.out.flush();
         containers = round(in, a[1], a[2], count, total, prefix);
