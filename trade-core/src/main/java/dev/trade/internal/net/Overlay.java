@@ -121,8 +121,8 @@ final class Overlay {
    * position; when there are none, the first id from the start, which then lies outside.
    */
   private static boolean isFinger(UUID self, UUID peer, UUID[] ids, int i) {
-    UUID from = new UUID(self.getMostSignificantBits() + (1L << (64 - i)), self.getLeastSignificantBits());
-    long width = 1L << (64 - i);
+    UUID from = intervalStart(self, i);
+    long width = intervalWidth(i);
     if (!inInterval(peer, self, from, width)) {
       for (UUID id : ids) {
         if (ahead(from, id, peer)) {
@@ -150,8 +150,7 @@ final class Overlay {
         }
       }
     }
-    long h = (self.getLeastSignificantBits() ^ self.getMostSignificantBits()) * 0x9E3779B97F4A7C15L + i;
-    return before == Long.remainderUnsigned(h ^ (h >>> 29), inside);
+    return before == position(self, i, inside);
   }
 
   /** The condition {@link #finger} stops at: {@code id} is self, or at or beyond the interval's end. */
@@ -177,9 +176,8 @@ final class Overlay {
 
   /** The finger for the interval [2^(128-i), 2^(129-i)) ahead of {@code self}. */
   private static UUID finger(UUID self, List<UUID> ring, int i, Set<UUID> linked) {
-    // Only the high half of an id matters for i <= 64: the bounds' low halves are self's.
-    UUID from = new UUID(self.getMostSignificantBits() + (1L << (64 - i)), self.getLeastSignificantBits());
-    long width = 1L << (64 - i); // of the interval, in units of the high half
+    UUID from = intervalStart(self, i);
+    long width = intervalWidth(i);
     int first = successorOf(ring, from);
     List<UUID> inside = new ArrayList<>();
     for (int k = first; inside.size() < ring.size(); k = (k + 1) % ring.size()) {
@@ -196,8 +194,26 @@ final class Overlay {
     if (inside.isEmpty()) {
       return ring.get(first);
     }
+    return inside.get(position(self, i, inside.size()));
+  }
+
+  /**
+   * The start of the interval [2^(128-i), 2^(129-i)) ahead of {@code self}. Only the high half of an
+   * id matters for i <= 64: the bounds' low halves are self's.
+   */
+  private static UUID intervalStart(UUID self, int i) {
+    return new UUID(self.getMostSignificantBits() + intervalWidth(i), self.getLeastSignificantBits());
+  }
+
+  /** The width of interval {@code i}, in units of an id's high half. */
+  private static long intervalWidth(int i) {
+    return 1L << (64 - i);
+  }
+
+  /** Which of the {@code size} containers in interval {@code i} is {@code self}'s finger there. */
+  private static int position(UUID self, int i, int size) {
     long h = (self.getLeastSignificantBits() ^ self.getMostSignificantBits()) * 0x9E3779B97F4A7C15L + i;
-    return inside.get((int) Long.remainderUnsigned(h ^ (h >>> 29), inside.size()));
+    return (int) Long.remainderUnsigned(h ^ (h >>> 29), size);
   }
 
   /** The position of the first container at or after {@code point}, cyclically. */
