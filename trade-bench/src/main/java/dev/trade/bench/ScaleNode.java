@@ -38,6 +38,7 @@ import java.util.concurrent.Future;
  *
  * <p>With {@code -Dbench.startTogether=true} it builds its containers all at once, each on a thread
  * of its own, as a launcher starting a whole system does (not part of the published figures).
+ * With {@code -Dbench.scaleProfiler} it profiles each round ({@link RoundProfile}).
  *
  * <p>Arguments: system id, broadcast port, count, total, name prefix.
  */
@@ -151,6 +152,7 @@ public final class ScaleNode {
     boolean progress = Boolean.getBoolean("bench.progress");
     long go = System.nanoTime();
     long goCpu = processCpuNanos();
+    boolean profiling = RoundProfile.start();
     if (Boolean.getBoolean("bench.startTogether")) {
       containers.addAll(buildTogether(sysId, port, count, prefix));
     }
@@ -222,8 +224,12 @@ public final class ScaleNode {
       }
       Thread.sleep(10);
     }
+    long ended = Clock.epochMicros();
+    if (profiling) {
+      RoundProfile.save(prefix);
+    }
     if (converged) {
-      System.out.println("CONVERGED " + Clock.epochMicros());
+      System.out.println("CONVERGED " + ended);
     } else {
       StringBuilder seen = new StringBuilder("TIMEOUT");
       for (TRADEContainer c : containers) {
