@@ -99,6 +99,7 @@ final class Jvm implements AutoCloseable {
             + timeoutMs + " ms");
       }
       if (line.equals("EOF")) {
+        lines.add(line); // for the next await too, which would otherwise wait out its timeout
         throw new IOException("child " + process.pid() + " exited before printing '" + prefix + "'");
       }
       if (line.startsWith(prefix)) {

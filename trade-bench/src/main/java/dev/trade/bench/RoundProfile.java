@@ -42,11 +42,18 @@ final class RoundProfile {
     agent("stop,collapsed,ann,file=" + DIRECTORY.resolve(prefix + "round" + rounds + ".collapsed"));
   }
 
-  /** Runs an async-profiler command; quoted, since the diagnostic command reads a=b as its own. */
+  /**
+   * Runs an async-profiler command; quoted, since the diagnostic command reads a=b as its own.
+   *
+   * @throws IllegalStateException if the library did not load or refused the command
+   */
   private static void agent(String command) throws JMException {
     String options = '"' + command + ",log=" + DIRECTORY.resolve("profiler.log") + '"';
-    ManagementFactory.getPlatformMBeanServer().invoke(
+    Object out = ManagementFactory.getPlatformMBeanServer().invoke(
         new ObjectName("com.sun.management:type=DiagnosticCommand"), "jvmtiAgentLoad",
         new Object[] {new String[] {LIBRARY, options}}, new String[] {String[].class.getName()});
+    if (!"return code: 0".equals(String.valueOf(out).trim())) {
+      throw new IllegalStateException("async-profiler (" + LIBRARY + ", " + command + "): " + out);
+    }
   }
 }
