@@ -11,9 +11,9 @@ import javax.management.ObjectName;
  * {@code -Dbench.scaleProfiler=<path>}, and where to write as {@code -Dbench.scaleProfiles=<dir>};
  * for one JVM of the scale part, pass both in {@code -Dbench.nodeOptions}). It takes a sample
  * for every 2 ms of CPU the JVM uses, on whichever thread, JIT compiler and collector threads
- * included, and marks each Java frame
- * interpreted, C1 or C2 compiled; {@code trade-bench/src/main/python/frame_types.py} counts them
- * (docs/benchmarks-log.md, "What the cold third is"). The JDK's flight recorder does not tell C1
+ * included, and marks each Java frame interpreted, C1 or C2 compiled;
+ * {@code trade-bench/src/main/python/frame_types.py} counts them (docs/benchmarks-log.md, "What
+ * the cold third is"). The JDK's flight recorder does not tell C1
  * from C2, and at a 2 ms period it recorded 45 samples of a 25-container JVM in a 10 s round.
  * The profiler is loaded as an agent through the JVM's diagnostic command, so that it needs no
  * jar on the class path, and logs to {@code profiler.log} in that directory, not to standard
