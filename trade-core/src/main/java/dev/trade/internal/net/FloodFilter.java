@@ -98,6 +98,17 @@ final class FloodFilter {
   }
 
   /**
+   * Forgets {@code link}, which closed: the holders of an owner's newest version are kept until a
+   * newer one comes or the owner is pruned, which for a container that left is a minute, and a
+   * closed link held there keeps its buffers.
+   */
+  void forget(Object link) {
+    for (Holders h : holders.values()) {
+      h.links.remove(link);
+    }
+  }
+
+  /**
    * Whether {@code link} needs no copy of {@code owner}'s link state at {@code version} from here:
    * it sent that version here itself, or a newer one is queued here (which is passed on instead).
    * With the control thread behind its links' readers, most neighbours have sent a version by the

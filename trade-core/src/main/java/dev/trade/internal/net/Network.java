@@ -69,6 +69,7 @@ public final class Network implements AutoCloseable {
    * long the control thread takes to get to it.
    */
   private final Set<Link> live = ConcurrentHashMap.newKeySet();
+  /** The peer at each address this container dialled, while that peer is linked. */
   private final Map<InetSocketAddress, UUID> dialled = new ConcurrentHashMap<>();
   /** How long close() lets the goodbyes, and what was queued before them, be written. */
   static final long CLOSE_GRACE_MS = 2000;
@@ -220,6 +221,11 @@ public final class Network implements AutoCloseable {
     return result;
   }
 
+  /** How many dialled addresses this container remembers (for tests). */
+  int dialledAddresses() {
+    return dialled.size();
+  }
+
   /** Calls a remote service; see {@code ServiceCaller}. */
   public Object call(ServiceDescriptor d, Object[] args, long deadlineNanos, ClassLoader loader)
       throws TRADEException {
@@ -242,13 +248,13 @@ public final class Network implements AutoCloseable {
       LOG.log(Level.WARNING, "link to {0} failed at once: {1}", peer.name(), e.getMessage());
       return;
     }
-    if (initiatedHere) {
-      dialled.put((InetSocketAddress) socket.getRemoteSocketAddress(), peer.containerId());
-    }
     boolean accepted = onControl(() -> {
       if (closed) {
         link.leave();
         return;
+      }
+      if (initiatedHere) { // kept while the peer is linked, whichever of its links stays
+        dialled.put((InetSocketAddress) socket.getRemoteSocketAddress(), peer.containerId());
       }
       Link drop = LinkSwaps.toClose(links.get(peer.containerId()), link, self);
       if (drop != null) {
@@ -322,6 +328,7 @@ public final class Network implements AutoCloseable {
   void linkClosed(Link link, String reason) {
     live.remove(link);
     onControl(() -> {
+      replication.linkClosed(link);
       if (!closed && links.get(link.peerId) == link
           && swaps.hold(link, reason, System.nanoTime())) {
         LOG.log(Level.DEBUG, "{0}: link to {1} closed ({2}); a handshake with it is under way,"
@@ -343,6 +350,7 @@ public final class Network implements AutoCloseable {
 
   private void lost(Link link, String reason) {
     if (links.remove(link.peerId, link)) {
+      dialled.values().removeIf(link.peerId::equals);
       boolean orderly = closed || reason.equals(Dispatch.GOODBYE);
       LOG.log(orderly ? Level.DEBUG : Level.INFO, "{0}: link to {1} closed: {2}", name,
           link.peerName, reason);

@@ -121,11 +121,30 @@ final class Replication {
       send(link, StateFrames.links(s));
     }
     send(link, StateFrames.table(tableCodec, registry.localTable()));
-    for (Table t : tables.known()) {
+    for (Table t : tablesToShare()) {
       send(link, StateFrames.table(tableCodec, t));
     }
   }
 
+  /**
+   * The tables to give a new neighbour: as with link states, none of containers this one lost.
+   * Those left or died, and a table kept for one (it may come back) must not be given on: a
+   * newcomer would keep it, without a route, and give it to the next newcomer after this container
+   * had forgotten it, which would then take it for new. With containers coming and going, the
+   * tables of containers long gone went round so for good, in every container's memory and in
+   * every newcomer's link-up. Whoever reaches a lost container gives its table, or answers the
+   * TABLE_REQUEST of a container that comes to reach it.
+   */
+  private List<Table> tablesToShare() {
+    List<Table> known = tables.known();
+    known.removeIf(t -> topology.isLost(t.containerId()));
+    return known;
+  }
+
+  /** Any link that closed, the neighbour's or a duplicate retired: nothing here may keep it. */
+  void linkClosed(Link link) {
+    filter.forget(link);
+  }
 
   void linkDown(Link link) {
     unanswered.remove(link);
@@ -284,7 +303,7 @@ final class Replication {
             throw new IOException("a second DIGEST, or one on a link without digests");
           }
           List<Topology.LinkState> states = topology.statesToShare();
-          for (byte[] frame : Digest.answer(payload, states, registry.localTable(), tables.known(),
+          for (byte[] frame : Digest.answer(payload, states, registry.localTable(), tablesToShare(),
               tableCodec)) {
             send(from, frame);
           }

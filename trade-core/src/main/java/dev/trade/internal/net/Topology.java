@@ -153,6 +153,12 @@ final class Topology {
     return result;
   }
 
+  /** Whether this container lost {@code container}: had a route to it, and has none now. */
+  boolean isLost(String container) {
+    fresh();
+    return lost.contains(container);
+  }
+
   /** The containers lost and reachable again since the last call, whose states to pass on again. */
   List<String> takeRegained() {
     fresh();

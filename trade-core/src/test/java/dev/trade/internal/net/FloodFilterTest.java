@@ -68,6 +68,15 @@ class FloodFilterTest {
   }
 
   @Test
+  void aClosedLinkIsForgotten() {
+    assertFalse(stale(A, Wire.LINKS, links("b", 1)));
+    assertTrue(stale(B, Wire.LINKS, links("b", 1)));
+    filter.forget(A);
+    assertFalse(filter.hasCopy(A, "b", 1), "A is no longer held");
+    assertTrue(filter.hasCopy(B, "b", 1), "B is");
+  }
+
+  @Test
   void aVersionIsSupersededOnceANewerOneIsQueued() {
     assertFalse(stale(A, Wire.LINKS, links("b", 1)));
     assertFalse(filter.superseded(Wire.LINKS, "b", 1), "the newest queued");

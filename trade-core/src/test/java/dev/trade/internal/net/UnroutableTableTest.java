@@ -2,6 +2,7 @@ package dev.trade.internal.net;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trade.TRADEContainer;
 import dev.trade.TRADEServiceConstraints;
@@ -14,6 +15,7 @@ import dev.trade.internal.registry.ServiceDescriptor;
 import dev.trade.internal.registry.Table;
 import java.net.InetSocketAddress;
 import java.time.Duration;
+import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Set;
@@ -27,7 +29,8 @@ import org.junit.jupiter.api.Timeout;
 /**
  * A table whose owner has no route yet (it came before the link states that connect its owner) is
  * not listed, and is listed as soon as its owner is routable, without being sent again; a
- * container that is cut off for a moment comes back the same way.
+ * container that is cut off for a moment comes back the same way. The table of a container that
+ * was reachable and is not any more is kept, but not given to newcomers.
  */
 @Timeout(30)
 class UnroutableTableTest {
@@ -100,6 +103,52 @@ class UnroutableTableTest {
     Deadline.await(Duration.ofSeconds(5), () -> listed("farProbe") == 1 && listed("farGauge") == 1,
         "the far services once routable");
     assertFalse(log.has(Level.INFO, "left or is not reachable"), log.tail());
+  }
+
+  /**
+   * Links a newcomer to the provider, with or without a digest, and lists what the provider gives
+   * it in the link-up exchange: "LINKS owner" and "TABLE owner" of each frame.
+   */
+  private List<String> linkUpExchange(boolean digests) throws Exception {
+    String[] a = provider.getServerAddresses().get(0).split("@");
+    try (RawPeer newcomer = RawPeer.connect(new InetSocketAddress(a[0], Integer.parseInt(a[1])))) {
+      if (digests) {
+        newcomer.handshakeWithDigests("newcomer");
+        newcomer.send(RawPeer.frame(Wire.DIGEST, new byte[] {0})); // it has nothing
+      } else {
+        newcomer.handshake("newcomer");
+      }
+      // Answered after the exchange: the provider's own table comes a second time.
+      newcomer.send(StateFrames.tableRequest(provider.getId()));
+      List<String> given = new ArrayList<>();
+      String own = "TABLE " + provider.getId();
+      while (given.indexOf(own) == given.lastIndexOf(own)) {
+        byte[] f = newcomer.readFrame();
+        if (f[0] == Wire.LINKS || f[0] == Wire.TABLE) {
+          String owner = ByteSource.of(Arrays.copyOfRange(f, 1, f.length)).readText(1024);
+          given.add((f[0] == Wire.LINKS ? "LINKS " : "TABLE ") + owner);
+        }
+      }
+      return given;
+    }
+  }
+
+  @Test
+  void theTableOfAContainerLostIsNotGivenToNewcomers() throws Exception {
+    connectFar(2, 1);
+    peer.send(StateFrames.table(tables, new Table(far, 1, List.of(service(1, "farProbe")))));
+    Deadline.await(Duration.ofSeconds(5), () -> listed("farProbe") == 1, "the far service");
+    List<String> before = linkUpExchange(true);
+    assertTrue(before.contains("TABLE " + far), "given while reachable: " + before);
+    peer.send(StateFrames.links(new Topology.LinkState(me, 3, Set.of(provider.getId()))));
+    Deadline.await(Duration.ofSeconds(5), () -> listed("farProbe") == 0, "the far service gone");
+    for (boolean digests : new boolean[] {true, false}) {
+      List<String> given = linkUpExchange(digests);
+      assertTrue(given.contains("LINKS " + me), "the exchange was read: " + given);
+      assertFalse(given.contains("TABLE " + far), "digests " + digests + ": " + given);
+      assertFalse(given.contains("LINKS " + far), "digests " + digests + ": " + given);
+    }
+    assertEquals(1, askForFarTable().version(), "kept, and given to one who asks for it");
   }
 
   @Test
