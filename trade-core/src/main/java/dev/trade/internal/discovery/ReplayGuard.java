@@ -2,6 +2,7 @@ package dev.trade.internal.discovery;
 
 import dev.trade.internal.discovery.BadPacketException.Reason;
 import java.time.Duration;
+import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.Map;
 
@@ -23,9 +24,13 @@ import java.util.Map;
  *       by side has a few, since answers and announcements arrive on different sockets and the
  *       receive thread reads them in its own order. Otherwise it is {@link Reason#REPLAYED}.
  * </ol>
- * Memory is bounded: beyond {@code maxSenders} the sender heard from least recently is forgotten
- * (only packets with a valid HMAC get here, so only members of the system can fill the table).
- * A forgotten sender's older packets pass the sequence check again, but not the clock check.
+ * Memory is bounded: a sender whose newest accepted packet is older than {@code maxClockSkew} is
+ * forgotten, since a replay of any of its packets fails the clock check now (so a system whose
+ * containers come and go remembers the senders of the last half minute, not every one it heard);
+ * and beyond {@code maxSenders} the sender heard from least recently is forgotten (only packets
+ * with a valid HMAC get here, so only members of the system can fill the table). A sender
+ * forgotten so early passes the sequence check again with its older packets, but not the clock
+ * check.
  *
  * <p>Not thread-safe: a {@link Receiver} uses it from its handling only, one datagram at a time.
  */
@@ -86,7 +91,24 @@ final class ReplayGuard {
           + a.containerId() + "), already at " + last.sequence);
     }
     highest.put(a.containerId(), new Latest(a.sequence(), a.timestampMillis()));
+    forgetOutOfClockRange(nowMillis);
     return last == null;
+  }
+
+  /**
+   * Forgets senders, least recently heard first, while the newest packet of one is older than the
+   * clock check lets through: every packet of such a sender fails that check already.
+   */
+  private void forgetOutOfClockRange(long nowMillis) {
+    if (maxSkewMillis == 0) {
+      return; // no clock check: the sequence is all that stops a replay
+    }
+    for (Iterator<Latest> it = highest.values().iterator(); it.hasNext(); ) {
+      if (nowMillis - it.next().timestampMillis <= maxSkewMillis) {
+        return;
+      }
+      it.remove();
+    }
   }
 
   /** How many senders are remembered. */

@@ -72,6 +72,29 @@ class ReplayGuardTest {
     assertTrue(small.check(at("b", 1, NOW), NOW), "b was forgotten, so it is new again");
   }
 
+  @Test
+  void forgetsSendersWhosePacketsAllFailTheClockCheckNow() throws BadPacketException {
+    guard.check(at("gone", 5, NOW), NOW);
+    guard.check(at("stays", 5, NOW), NOW);
+    long later = NOW + 30_001;
+    guard.check(at("stays", 6, later - 1_000), later); // heard again meanwhile
+    guard.check(at("new", 1, later), later);
+    assertEquals(2, guard.size(), "'gone' was last heard more than 30 s ago");
+    assertEquals(Reason.CLOCK_SKEW, assertThrows(BadPacketException.class,
+        () -> guard.check(at("gone", 5, NOW), later)).reason(), "its replay fails the clock check");
+    assertThrows(BadPacketException.class, () -> guard.check(at("stays", 6, later), later));
+  }
+
+  @Test
+  void withoutTheClockCheckOnlyTheBoundForgets() throws BadPacketException {
+    ReplayGuard unsynced = new ReplayGuard(10, Duration.ZERO);
+    unsynced.check(at("a", 5, NOW), NOW);
+    unsynced.check(at("b", 5, NOW + 3_600_000), NOW + 3_600_000);
+    assertEquals(2, unsynced.size());
+    assertThrows(BadPacketException.class, () -> unsynced.check(at("a", 5, NOW), NOW + 3_600_000),
+        "a replay an hour later is still refused by its sequence");
+  }
+
   private BadPacketException rejected(Reason reason, Announcement a) {
     return rejected(reason, a, "");
   }
