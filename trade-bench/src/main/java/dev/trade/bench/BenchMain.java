@@ -11,13 +11,14 @@ import java.util.List;
  * {@code remote} (latency and throughput against the peers), {@code lifecycle} (start to callable,
  * kill to left), {@code scale} (10/50/100 containers) and {@code machine} (facts about this host).
  * {@code src/run-benchmarks} runs them all; {@code -Dbench.quick=true} makes a short smoke run.
+ * {@code churn} (containers coming and going, {@link Churn}) is run by hand.
  */
 public final class BenchMain {
   private BenchMain() {}
 
   public static void main(String[] args) throws Throwable {
     if (args.length < 2) {
-      System.err.println("usage: BenchMain remote|lifecycle|scale|localcpu|machine <results-dir> [systems...]");
+      System.err.println("usage: BenchMain remote|lifecycle|scale|localcpu|machine|churn <results-dir> [systems...]");
       System.exit(2);
     }
     Path out = Path.of(args[1]);
@@ -38,6 +39,7 @@ public final class BenchMain {
       case "scale" -> new Scale(logs, quick).run(json);
       case "machine" -> machine(json);
       case "localcpu" -> LocalCpu.run(json);
+      case "churn" -> new Churn().run(json);
       default -> throw new IllegalArgumentException("unknown part " + args[0]);
     }
     json.field("load_average_after", loadAverage());
