@@ -85,8 +85,6 @@ public final class Network implements AutoCloseable {
     this.self = self;
     this.name = name;
     this.registry = registry;
-    // The frames of a burst of state changes leave together (one system call per link).
-    this.control = new ControlExecutor(daemon("trade-control-" + name), this::flushQueued);
     this.timer = Executors.newSingleThreadScheduledExecutor(daemon("trade-timer-" + name));
     this.workers = Executors.newCachedThreadPool(daemon("trade-worker-" + name));
     this.readWatch = new ReadWatch(live, workers, name);
@@ -95,6 +93,8 @@ public final class Network implements AutoCloseable {
     this.replication = new Replication(self, registry, tableCodec, links, calls,
         settings.failureTimeout().plus(settings.heartbeatInterval()).toNanos(),
         this::onControlAfter, this::unreachable);
+    // The frames of a burst of state changes leave together (one system call per link).
+    this.control = new ControlExecutor(daemon("trade-control-" + name), replication::flushQueued);
     this.dispatch = new Dispatch(calls, replication, this,
         Dispatch.backlogLimit(settings.maxFrameSize()));
     if (settings.defaultCredentialsBeyondThisHost()) {
@@ -173,8 +173,7 @@ public final class Network implements AutoCloseable {
   }
 
   /**
-   * Turns announcing this container on or off at run time (it then accepts connections, if it did
-   * not already).
+   * Turns announcing this container on or off at run time (then accepting connections, if not yet).
    *
    * @throws IOException if a listen socket or the discovery socket cannot be opened
    */
@@ -221,8 +220,7 @@ public final class Network implements AutoCloseable {
     return result;
   }
 
-  /** How many dialled addresses this container remembers (for tests). */
-  int dialledAddresses() {
+  int dialledAddresses() { // for tests
     return dialled.size();
   }
 
@@ -318,10 +316,6 @@ public final class Network implements AutoCloseable {
     } catch (RejectedExecutionException closing) {
       // Nothing left to do it for.
     }
-  }
-
-  private void flushQueued() {
-    replication.flushQueued();
   }
 
   /** A link's reader ended (its reading thread). */
