@@ -15,7 +15,6 @@ import java.lang.System.Logger;
 import java.lang.System.Logger.Level;
 import java.net.InetSocketAddress;
 import java.net.Socket;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -134,11 +133,7 @@ public final class Network implements AutoCloseable {
             });
           }
         });
-    // A container whose handshake with this one is under way counts as linked: its link is
-    // registered only when the control thread gets to it, seconds later in a loaded JVM, and a
-    // dial meanwhile made a second link that one side then closed as a duplicate.
-    this.discovery = new DiscoverySwitches(settings, self, name, connector,
-        peer -> links.containsKey(peer) || swaps.handshaking(peer),
+    this.discovery = new DiscoverySwitches(settings, self, name, connector, this::linkedOrLinking,
         replication::reachableCount, timer, () -> closed);
     registry.addListener(
         (added, removed) -> replication.localChanged(added, removed, this::onControl));
@@ -215,9 +210,15 @@ public final class Network implements AutoCloseable {
 
   /** Ids of the containers this one has a direct link to. */
   public List<String> neighbours() {
-    List<String> result = new ArrayList<>();
-    links.keySet().forEach(id -> result.add(id.toString()));
-    return result;
+    return links.keySet().stream().map(UUID::toString).toList();
+  }
+
+  /**
+   * Whether discovery counts {@code peer} as linked: a link, or a handshake under way (registered
+   * once a control thread seconds behind gets to it; a dial meanwhile made a duplicate link).
+   */
+  boolean linkedOrLinking(UUID peer) {
+    return links.containsKey(peer) || swaps.handshaking(peer);
   }
 
   int dialledAddresses() { // for tests
@@ -393,8 +394,7 @@ public final class Network implements AutoCloseable {
 
   /** Closes every link still open after its goodbye had its time. */
   private void closeLinksNow() {
-    for (Link l : live) {
-      l.close("container closed: the goodbye was not written within " + CLOSE_GRACE_MS + " ms");
-    }
+    live.forEach(l -> l.close("container closed: the goodbye was not written within "
+        + CLOSE_GRACE_MS + " ms"));
   }
 }
