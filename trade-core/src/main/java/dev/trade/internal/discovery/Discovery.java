@@ -115,7 +115,7 @@ public final class Discovery implements AutoCloseable {
           if (b.answering.test(a.containerId())) {
             announcer.answer(from);
           }
-        }, b.observer, b.maxClockSkew, b.reportInterval, b.discovery, announcer.executor());
+        }, b.observer, replayGuard(b), b.reportInterval, b.discovery, announcer.executor());
     try {
       receiver.start(family, target, interfaces);
     } catch (IOException | RuntimeException e) {
@@ -129,6 +129,16 @@ public final class Discovery implements AutoCloseable {
         b.range, Integer.toString(b.range.ttl), b.broadcast, b.discovery};
     announcer.start(b.interval, () -> LOG.log(Level.INFO, "Discovery of ''{0}'' in system ''{1}''"
         + " on {2} via {3} ({4}, TTL {5}): announcing {6}, listening {7}", facts));
+  }
+
+  /**
+   * The receiver's replay guard: it keeps a sender for three announcement intervals at least, so
+   * that with announcements further apart than the clock tolerance, a container that keeps
+   * announcing is not taken for a newcomer (and answered) each time.
+   */
+  static ReplayGuard replayGuard(Builder b) {
+    return new ReplayGuard(ReplayGuard.DEFAULT_MAX_SENDERS, b.maxClockSkew,
+        b.interval.multipliedBy(3));
   }
 
   /** A builder; see {@link Builder} for what is required and the defaults. */

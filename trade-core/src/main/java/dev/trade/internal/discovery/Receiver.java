@@ -129,12 +129,13 @@ final class Receiver {
    *     read while this receiver listens, closed by their owner
    * @param newSender told (on {@code handler}) of an accepted announcement from a container not
    *     heard before, and its source
+   * @param replay this receiver's own: it uses it from its handling only
    * @param handler where this receiver handles its datagrams, one task at a time (a
    *     single-threaded executor: the checks, the listener and {@code newSender} run there)
    */
   Receiver(List<DatagramChannel> answers, String systemId, String containerId, byte[] key,
       Discovery.Listener listener, BiConsumer<Announcement, InetSocketAddress> newSender,
-      Observer observer, Duration maxClockSkew, Duration reportInterval, boolean on,
+      Observer observer, ReplayGuard replay, Duration reportInterval, boolean on,
       Executor handler) {
     this.handler = handler;
     this.answers = List.copyOf(answers);
@@ -145,7 +146,7 @@ final class Receiver {
     this.listener = listener;
     this.newSender = newSender;
     this.observer = observer;
-    this.replay = new ReplayGuard(ReplayGuard.DEFAULT_MAX_SENDERS, maxClockSkew);
+    this.replay = replay;
     this.drops = new Drops(LOG, systemId, reportInterval.toNanos());
     this.on = on;
   }

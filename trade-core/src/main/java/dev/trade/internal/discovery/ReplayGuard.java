@@ -26,11 +26,12 @@ import java.util.Map;
  * </ol>
  * Memory is bounded: a sender whose newest accepted packet is older than {@code maxClockSkew} is
  * forgotten, since a replay of any of its packets fails the clock check now (so a system whose
- * containers come and go remembers the senders of the last half minute, not every one it heard);
- * and beyond {@code maxSenders} the sender heard from least recently is forgotten (only packets
- * with a valid HMAC get here, so only members of the system can fill the table). A sender
- * forgotten so early passes the sequence check again with its older packets, but not the clock
- * check.
+ * containers come and go remembers the senders of the last half minute, not every one it heard),
+ * unless it is within {@code remember}, which keeps a sender that announces itself less often than
+ * the clock tolerance from counting as new at each announcement; and beyond {@code maxSenders} the
+ * sender heard from least recently is forgotten (only packets with a valid HMAC get here, so only
+ * members of the system can fill the table). A sender forgotten so early passes the sequence check
+ * again with its older packets, but not the clock check.
  *
  * <p>Not thread-safe: a {@link Receiver} uses it from its handling only, one datagram at a time.
  */
@@ -41,13 +42,22 @@ final class ReplayGuard {
   static final long OVERTAKEN_MILLIS = 1000;
 
   private final long maxSkewMillis;
+  /** How long a sender is kept after its newest packet: the tolerance, or longer (remember). */
+  private final long keepMillis;
   private final Map<String, Latest> highest;
+
+  /** A guard that keeps senders as long as the clock tolerance (see the other constructor). */
+  ReplayGuard(int maxSenders, Duration maxClockSkew) {
+    this(maxSenders, maxClockSkew, Duration.ZERO);
+  }
 
   /**
    * @param maxSenders how many senders to remember, at least 1
    * @param maxClockSkew the tolerance either way; zero turns the clock check off
+   * @param remember how long at least a sender is kept after its newest accepted packet (a few of
+   *     its announcement intervals), if longer than {@code maxClockSkew}
    */
-  ReplayGuard(int maxSenders, Duration maxClockSkew) {
+  ReplayGuard(int maxSenders, Duration maxClockSkew, Duration remember) {
     if (maxSenders < 1) {
       throw new IllegalArgumentException("maxSenders " + maxSenders + " < 1");
     }
@@ -55,6 +65,7 @@ final class ReplayGuard {
       throw new IllegalArgumentException("maxClockSkew " + maxClockSkew + " is negative");
     }
     this.maxSkewMillis = maxClockSkew.toMillis();
+    this.keepMillis = Math.max(maxSkewMillis, remember.toMillis());
     // Access order: a sender that keeps announcing is never the one evicted.
     this.highest = new LinkedHashMap<>(64, 0.75f, true) {
       private static final long serialVersionUID = 1L;
@@ -97,14 +108,15 @@ final class ReplayGuard {
 
   /**
    * Forgets senders, least recently heard first, while the newest packet of one is older than the
-   * clock check lets through: every packet of such a sender fails that check already.
+   * clock check lets through (every packet of such a sender fails that check already) and than
+   * {@code remember}.
    */
   private void forgetOutOfClockRange(long nowMillis) {
     if (maxSkewMillis == 0) {
       return; // no clock check: the sequence is all that stops a replay
     }
     for (Iterator<Latest> it = highest.values().iterator(); it.hasNext(); ) {
-      if (nowMillis - it.next().timestampMillis <= maxSkewMillis) {
+      if (nowMillis - it.next().timestampMillis <= keepMillis) {
         return;
       }
       it.remove();

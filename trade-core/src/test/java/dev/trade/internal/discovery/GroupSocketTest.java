@@ -57,7 +57,8 @@ class GroupSocketTest {
   private static Receiver receiver(String id, List<DatagramChannel> answers,
       Discovery.Listener listener, Receiver.Observer observer, Executor handler) {
     return new Receiver(answers, SYSTEM, id, KEY, listener, (a, from) -> { }, observer,
-        Duration.ofSeconds(30), Duration.ofSeconds(60), true, handler);
+        new ReplayGuard(ReplayGuard.DEFAULT_MAX_SENDERS, Duration.ofSeconds(30)),
+        Duration.ofSeconds(60), true, handler);
   }
 
   /**

@@ -115,7 +115,8 @@ class ReceiverTest {
 
   private Receiver receiver(Discovery.Listener listener, Executor handler) throws IOException {
     return new Receiver(List.of(), SYSTEM, "me", KEY, listener,
-        (a, from) -> newcomers.incrementAndGet(), recorder, Duration.ofSeconds(30),
+        (a, from) -> newcomers.incrementAndGet(), recorder,
+        new ReplayGuard(ReplayGuard.DEFAULT_MAX_SENDERS, Duration.ofSeconds(30)),
         Duration.ofSeconds(60), true, handler);
   }
 }

@@ -86,6 +86,28 @@ class ReplayGuardTest {
   }
 
   @Test
+  void aSenderThatAnnouncesLessOftenThanTheToleranceStaysKnownForItsIntervals()
+      throws BadPacketException {
+    // BROADCASTINTERVAL 20 s, remembered for three of them, beside the 30 s clock tolerance.
+    ReplayGuard slow = new ReplayGuard(4096, Duration.ofSeconds(30), Duration.ofSeconds(60));
+    assertTrue(slow.check(at("slow", 1, NOW), NOW));
+    slow.check(at("other", 1, NOW + 40_000), NOW + 40_000);
+    assertFalse(slow.check(at("slow", 2, NOW + 40_000), NOW + 40_000),
+        "its next announcement, 40 s later, is not a newcomer's");
+    slow.check(at("other", 2, NOW + 101_000), NOW + 101_000);
+    assertEquals(1, slow.size(), "forgotten once silent for longer than both");
+  }
+
+  @Test
+  void discoveryKeepsASenderForThreeOfItsIntervals() throws BadPacketException {
+    // Announcing every 20 s with the default 30 s clock tolerance.
+    ReplayGuard g = Discovery.replayGuard(Discovery.builder().interval(Duration.ofSeconds(20)));
+    assertTrue(g.check(at("slow", 1, NOW), NOW));
+    g.check(at("other", 1, NOW + 40_000), NOW + 40_000);
+    assertFalse(g.check(at("slow", 2, NOW + 40_000), NOW + 40_000));
+  }
+
+  @Test
   void withoutTheClockCheckOnlyTheBoundForgets() throws BadPacketException {
     ReplayGuard unsynced = new ReplayGuard(10, Duration.ZERO);
     unsynced.check(at("a", 5, NOW), NOW);
