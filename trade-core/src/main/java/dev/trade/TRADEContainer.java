@@ -255,7 +255,10 @@ public final class TRADEContainer implements AutoCloseable {
     return core.isBroadcasting();
   }
 
-  /** The ids of the containers this one has a direct, authenticated link to right now. */
+  /**
+   * The ids of the containers this one has a direct, authenticated link to right now: an
+   * unmodifiable snapshot.
+   */
   public List<String> getNeighbours() {
     return core.neighbours();
   }
