@@ -15,6 +15,7 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.TreeSet;
 import java.util.UUID;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.RejectedExecutionException;
@@ -54,6 +55,8 @@ final class Finder implements AutoCloseable {
   private record Heard(Announcement announcement, long atNanos) {}
 
   private final UUID self;
+  /** This container's name, for the DEBUG lines that trace a join. */
+  private final String name;
   private final Predicate<UUID> linked;
   private final IntSupplier reachable;
   private final Connector connector;
@@ -76,6 +79,7 @@ final class Finder implements AutoCloseable {
       Predicate<UUID> linked, IntSupplier reachable, Connector connector,
       ScheduledExecutorService timer, boolean broadcast, boolean discover) throws IOException {
     this.self = self;
+    this.name = name;
     this.linked = linked;
     this.reachable = reachable;
     this.connector = connector;
@@ -163,6 +167,7 @@ final class Finder implements AutoCloseable {
       answered.add(peer);
     }
     if (known.put(peer, new Heard(a, System.nanoTime())) == null) {
+      LOG.log(Level.DEBUG, "{0}: heard {1} ({2})", name, a.containerName(), peer);
       membershipChanged();
     } else if (wanted.contains(peer)) {
       consider(peer);
@@ -222,8 +227,13 @@ final class Finder implements AutoCloseable {
     if (holding()) {
       Set<UUID> early = early(self, answered, known.keySet(), linkedNow());
       if (!early.isEmpty()) {
+        boolean changed = !early.equals(wanted);
         wanted = early;
         early.forEach(this::consider);
+        if (changed && LOG.isLoggable(Level.DEBUG)) { // after its dials, as below
+          LOG.log(Level.DEBUG, "{0}: holding, chose {1} of the {2} that answered", name,
+              new TreeSet<>(early), answered.size());
+        }
       }
       if (choosing.compareAndSet(false, true)) {
         later(this::choose, SETTLE_MS); // look again then
@@ -234,6 +244,9 @@ final class Finder implements AutoCloseable {
     wanted = now;
     for (UUID peer : now) {
       consider(peer);
+    }
+    if (LOG.isLoggable(Level.DEBUG)) { // after the dials made at once: a trace shows them first
+      LOG.log(Level.DEBUG, "{0}: chose {1} of {2} heard", name, new TreeSet<>(now), known.size());
     }
   }
 
@@ -340,7 +353,8 @@ final class Finder implements AutoCloseable {
       return;
     }
     Announcement a = h.announcement();
-    LOG.log(Level.DEBUG, "heard {0} ({1}) at {2}; connecting", a.containerName(), peer, a.addresses());
+    LOG.log(Level.DEBUG, "{0}: dialling {1} ({2}) at {3}", name, a.containerName(), peer,
+        a.addresses());
     for (InetSocketAddress address : a.addresses()) {
       connector.connectOnce(address); // in parallel: the first to finish its handshake wins
     }
