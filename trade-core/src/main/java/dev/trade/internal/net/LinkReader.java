@@ -46,8 +46,9 @@ final class LinkReader {
     link.role.takenOver(); // a hand-off's new thread reads now, whoever read before
     String why = first == null ? null : handOut(first);
     while (why == null) {
-      if (input.buffered() == 0 && link.role.callerWaits() && !link.socketClosed()) {
-        // A lone caller waits for its reply over this link: it reads the reply itself.
+      if (input.buffered() == 0 && link.role.shouldLend() && !link.socketClosed()) {
+        // A lone caller waits for its reply over this link, or may call again soon: it reads
+        // the reply itself.
         if (!link.endBurst() || !link.role.lend()) {
           return; // another thread reads now, or reading ended
         }

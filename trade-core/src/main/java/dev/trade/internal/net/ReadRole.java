@@ -8,13 +8,16 @@ import java.util.concurrent.locks.LockSupport;
  * Who reads a link: its reading thread, or a caller waiting for its reply over it.
  *
  * <p>A reply read by the link's thread must then be handed to the caller, and on a small machine
- * that hand-off is a third thread per call beside the caller and the provider's reader. So while
- * a lone caller waits for a reply over a link, the link's thread, once it has read all it holds,
- * lends reading to callers and parks ({@link #lend}); the caller reads the link itself
- * ({@link #tryTake}), as a raw socket client reads its own. A caller in a tight loop takes reading
- * again with every call; once callers stop for {@link #LINGER_NANOS}, or one stops early
- * ({@link #giveBack} with {@code wake}), the link's thread takes reading back. So a frame that
- * arrives while no caller reads waits at most about that long.
+ * that hand-off is a third thread per call beside the caller and the provider's reader; after a
+ * pause it also wakes the caller on the other core, which sleeps. So while a lone caller waits for
+ * a reply over a link, or has lately called over it, the link's thread, once it has read all it
+ * holds, lends reading to callers and parks ({@link #lend}); the caller reads the link itself
+ * ({@link #tryTake}), as a raw socket client reads its own. A caller in a loop, back to back or
+ * once a millisecond like a control loop, takes reading again with every call; once callers stop
+ * for {@link #LINGER_NANOS}, or one stops early ({@link #giveBack} with {@code wake}), or a caller
+ * that does not read waits for a reply ({@link #parking}), the link's thread takes reading back.
+ * So a frame that arrives while no caller reads (a ping, the peer's own call) waits at most about
+ * that long, and only on a link a lone caller uses.
  *
  * <p>States: {@code READING} (a reading thread has it), {@code FREE} (lent, nobody reads now),
  * {@code LENT} (a caller reads), {@code ENDED} (the link's reading ended). Only the holder leaves
@@ -22,27 +25,54 @@ import java.util.concurrent.locks.LockSupport;
  * holder that serves a call ({@link #takenOver}). Safe for concurrent use.
  */
 final class ReadRole {
-  /** How long reading stays lent after a caller last took it. */
-  static final long LINGER_NANOS = TimeUnit.MICROSECONDS.toNanos(200);
+  /**
+   * How long reading stays lent after a caller last borrowed or took it: longer than a 1 kHz
+   * control loop's period with its jitter, so that such a loop finds it lent at every call.
+   */
+  static final long LINGER_NANOS = TimeUnit.MILLISECONDS.toNanos(2);
   private static final int READING = 0;
   private static final int FREE = 1;
   private static final int LENT = 2;
   private static final int ENDED = 3;
 
+  private final long linger;
   private final AtomicInteger state = new AtomicInteger(READING);
   /** Callers that will read their replies themselves, from before they send until they stop. */
   private final AtomicInteger borrowers = new AtomicInteger();
+  /** Callers that wait for a reply without reading: reading must not stay lent meanwhile. */
+  private final AtomicInteger parked = new AtomicInteger();
   /** The thread that lent reading and waits to take it back. */
   private volatile Thread lender;
-  private volatile long lastTaken = System.nanoTime();
+  /** When a caller last borrowed or took reading; long ago at first. */
+  private volatile long lastActive;
   /** A caller stopped while others may wait: the lender takes reading back at once. */
   private volatile boolean wanted;
   /** The link is closed: the lender takes reading back at once, to end it. */
   private volatile boolean closing;
 
-  /** Whether a caller is about to read (asked by the reading thread between frames). */
+  ReadRole() {
+    this(LINGER_NANOS);
+  }
+
+  /** @param linger how long reading stays lent after a caller (tests give other lingers) */
+  ReadRole(long linger) {
+    this.linger = linger;
+    this.lastActive = System.nanoTime() - 2 * linger;
+  }
+
+  /** Whether a caller is about to read (for tests). */
   boolean callerWaits() {
     return borrowers.get() > 0;
+  }
+
+  /**
+   * Whether the reading thread, with nothing left to read, should lend reading: a caller is about
+   * to read, or one borrowed or read within {@link #LINGER_NANOS} and may call again, and no
+   * caller waits for a reply that only a reading thread would read.
+   */
+  boolean shouldLend() {
+    return parked.get() == 0
+        && (borrowers.get() > 0 || System.nanoTime() - lastActive < linger);
   }
 
   /**
@@ -60,15 +90,15 @@ final class ReadRole {
         if (s == READING || s == ENDED) {
           return false;
         }
-        long idle = System.nanoTime() - lastTaken;
+        long idle = System.nanoTime() - lastActive;
         boolean waiting = borrowers.get() > 0;
-        boolean back = wanted || closing || !waiting && idle >= LINGER_NANOS;
+        boolean back = wanted || closing || parked.get() > 0 || !waiting && idle >= linger;
         if (back && s == FREE && state.compareAndSet(FREE, READING)) {
           wanted = false;
           return true;
         }
         // Until the linger is over, or (callers about) until a caller takes, stops or wakes us.
-        LockSupport.parkNanos(this, back || waiting ? LINGER_NANOS : LINGER_NANOS - idle);
+        LockSupport.parkNanos(this, back || waiting ? linger : linger - idle);
       }
     } finally {
       if (lender == self) {
@@ -80,15 +110,35 @@ final class ReadRole {
   /** Counts a caller that will read its own reply; before it sends its call. */
   void borrow() {
     borrowers.incrementAndGet();
+    lastActive = System.nanoTime();
   }
 
   /**
-   * Ends a {@link #borrow}.
+   * A caller is about to wait for a reply over this link without reading it: if reading is lent,
+   * the lender reads again at once, and lends no more until {@link #unparked}.
+   */
+  void parking() {
+    parked.incrementAndGet();
+    int s = state.get();
+    if (s == FREE || s == LENT) {
+      wakeLender(); // if LENT, the caller that reads wakes it too as it stops (release)
+    }
+  }
+
+  /** Ends a {@link #parking}: the caller has its reply, or stopped waiting. */
+  void unparked() {
+    parked.decrementAndGet();
+  }
+
+  /**
+   * Ends a {@link #borrow}, once the caller has its reply (or its call failed or was not sent):
+   * the linger counts from here.
    *
-   * @param wake whether the lender should read again at once: the caller still waits, or other
-   *     callers do, and their replies must not wait for the linger
+   * @param wake whether the lender should read again at once: other callers wait, and their
+   *     replies must not wait for the linger
    */
   void giveBack(boolean wake) {
+    lastActive = System.nanoTime();
     borrowers.decrementAndGet();
     if (wake) {
       wanted = true;
@@ -99,7 +149,7 @@ final class ReadRole {
   /** A caller takes reading if nobody reads; then it must {@link #release} it or end it. */
   boolean tryTake() {
     if (state.get() == FREE && state.compareAndSet(FREE, LENT)) {
-      lastTaken = System.nanoTime();
+      lastActive = System.nanoTime();
       return true;
     }
     return false;
@@ -108,7 +158,7 @@ final class ReadRole {
   /** The caller that took reading stops reading; the lender (or the next caller) goes on. */
   void release() {
     state.set(FREE);
-    if (wanted) {
+    if (wanted || parked.get() > 0) {
       wakeLender();
     }
   }
@@ -141,6 +191,11 @@ final class ReadRole {
   boolean isLent() {
     int s = state.get();
     return s == FREE || s == LENT;
+  }
+
+  /** Callers waiting for a reply over the link without reading (for tests). */
+  int parked() {
+    return parked.get();
   }
 
   /** Whether a caller reads now (for tests). */

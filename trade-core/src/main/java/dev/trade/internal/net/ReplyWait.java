@@ -6,15 +6,15 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 
 /**
- * How a caller waits for its reply. A lone caller whose replies have lately come back within
- * {@link #MAX_SPIN_NANOS} waits actively for about two round trips, and reads the link itself
- * meanwhile (see {@link ReadRole}): the reply then wakes no thread on its way to the caller, which
- * saves one or two thread wake-ups (5-20 us each on a small machine) per call. A reply later than
- * that it waits for in a read of its own for up to {@link #BLOCK_NANOS}, so that the reply wakes
- * it directly, not through the link's thread; then it parks. Should the link's thread still read
- * when the reply comes, it hands the reply over without waking the caller. Many callers at once
- * park at once: their spinning would take the cores that produce the replies. Safe for concurrent
- * use.
+ * How a caller waits for its reply. A lone caller reads the link itself when reading is lent to
+ * callers (see {@link ReadRole}): the reply then wakes no thread on its way to the caller, which
+ * saves one or two thread wake-ups (5-20 us each on a small machine, more after a pause) per
+ * call. If its replies have lately come back within {@link #MAX_SPIN_NANOS}, it waits actively for
+ * about two round trips; a reply later than that (or any reply, on one core) it waits for in a
+ * read of its own for up to {@link #BLOCK_NANOS}, so that the reply wakes it directly, as a raw
+ * socket's caller is woken, not through the link's thread; then it parks. Should the link's
+ * thread still read when the reply comes, it hands the reply over. Many callers at once park at
+ * once: their spinning would take the cores that produce the replies. Safe for concurrent use.
  */
 final class ReplyWait {
   /** Spinning only helps when another core can run the threads that bring the reply. */
@@ -45,12 +45,12 @@ final class ReplyWait {
   }
 
   /**
-   * Before a call is sent over {@code link}: whether its caller will likely wait alone and
-   * actively, and so read its reply itself; then it is counted on the link
-   * ({@link ReadRole#borrow}), and must pass true to {@link #await} or {@link #abandon}.
+   * Before a call is sent over {@code link}: whether its caller will likely wait alone, and so
+   * read its reply itself; then it is counted on the link ({@link ReadRole#borrow}), and must pass
+   * true to {@link #await} or {@link #abandon}.
    */
   boolean borrow(Link link) {
-    if (SPIN && waiting.get() == 0 && roundTrip < MAX_SPIN_NANOS) {
+    if (waiting.get() == 0) {
       link.role.borrow();
       return true;
     }
@@ -76,33 +76,45 @@ final class ReplyWait {
     try {
       boolean lone = waiting.getAndIncrement() == 0;
       long estimate = roundTrip;
-      try {
-        if (lone && SPIN && estimate < MAX_SPIN_NANOS) {
-          long until = sent + Math.min(MAX_SPIN_NANOS, 2 * estimate);
-          if (borrowed) {
-            link.reader.readFor(reply, until);
-            if (!reply.isDone() && waiting.get() == 1) {
-              link.reader.blockFor(reply, System.nanoTime() + blockNanos);
-            }
-          } else {
-            while (!reply.isDone() && System.nanoTime() - until < 0) {
-              Thread.onSpinWait();
-            }
-          }
+      boolean spin = lone && SPIN && estimate < MAX_SPIN_NANOS;
+      long until = sent + Math.min(MAX_SPIN_NANOS, 2 * estimate);
+      if (borrowed) {
+        if (spin) {
+          link.reader.readFor(reply, until);
         }
-      } finally {
-        if (borrowed) {
-          // The link's thread reads again at once if this caller goes on waiting (parked), or
-          // if others wait: nobody may read for them now.
-          link.role.giveBack(!reply.isDone() || waiting.get() > 1);
+        if (!reply.isDone() && lone && waiting.get() == 1) {
+          link.reader.blockFor(reply, System.nanoTime() + blockNanos);
+        }
+      } else if (spin) {
+        while (!reply.isDone() && System.nanoTime() - until < 0) {
+          Thread.onSpinWait();
         }
       }
-      byte[] result = reply.get();
+      byte[] result = parkFor(link, reply);
       long took = System.nanoTime() - sent;
       roundTrip += (Math.min(took, 16 * MAX_SPIN_NANOS) - roundTrip) >> 3;
       return result;
     } finally {
+      if (borrowed) {
+        // Once it has its reply (so a control loop's next call finds reading lent, see ReadRole);
+        // if others wait, the link's thread reads again at once: nobody may read for them now.
+        link.role.giveBack(waiting.get() > 1);
+      }
       waiting.decrementAndGet();
     }
+  }
+
+  /** Parks until {@code reply} is done; the link is not left lent meanwhile (nobody would read). */
+  private static byte[] parkFor(Link link, CompletableFuture<byte[]> reply)
+      throws ExecutionException, InterruptedException {
+    if (!reply.isDone()) {
+      ReadRole role = link.role;
+      role.parking();
+      // Uncounted by the thread that completes the reply, before it reads on: a link's thread
+      // that hands this reply over must find no caller parked, and lend reading again, or the
+      // caller's next call would find it blocked in a read and be handed its reply once more.
+      reply.whenComplete((r, e) -> role.unparked());
+    }
+    return reply.get();
   }
 }

@@ -24,6 +24,8 @@ import java.util.concurrent.Future;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.concurrent.locks.LockSupport;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -171,6 +173,58 @@ class LentReadingTest {
     assertEquals(8, reply.get(WAIT.toMillis(), TimeUnit.MILLISECONDS).length, "the reply");
     assertSame(caller[0], h.replyReaders.poll(), "the caller read its reply");
     Deadline.await(WAIT, () -> !link.role.isLent(), "the link's thread to take reading back");
+  }
+
+  /**
+   * A control loop's caller: a call about every millisecond, each reply slower than a spin's
+   * worth. It reads its replies itself: reading stays lent from one call to the next, and a reply
+   * the link's thread hands over (the first: reading was not lent yet) leaves it lent for the next.
+   */
+  @Test
+  void aControlLoopsCallerReadsItsOwnRepliesThoughTheyComeSlowly() throws Exception {
+    int calls = 20;
+    AtomicReference<CompletableFuture<byte[]>> current = new AtomicReference<>();
+    BlockingQueue<Thread> readers = new LinkedBlockingQueue<>();
+    Link link = links.link(UUID.randomUUID(), "lentpeer", far);
+    watched.add(link);
+    link.start(new LinkHandler() {
+      @Override
+      public boolean frame(Link l, int type, byte[] payload) {
+        if (type == Wire.REPLY) {
+          readers.add(Thread.currentThread());
+          current.get().complete(payload);
+        }
+        return true;
+      }
+
+      @Override
+      public void closed(Link l, String why) {}
+    }, watch);
+    ReplyWait wait = new ReplyWait(WAIT.toNanos());
+    BlockingQueue<Integer> sent = new LinkedBlockingQueue<>();
+    Future<?> provider = workers.submit(() -> { // replies once the caller waits, a while later
+      for (int i = 0; i < calls; i++) {
+        int call = sent.take();
+        Deadline.await(WAIT, () -> wait.waiting() == 1, "the caller to wait for reply " + call);
+        sendFromFar(Wire.REPLY);
+      }
+      return null;
+    });
+    int readHere = 0;
+    for (int i = 0; i < calls; i++) {
+      LockSupport.parkNanos(TimeUnit.MILLISECONDS.toNanos(1)); // the loop's period, not a wait
+      CompletableFuture<byte[]> reply = new CompletableFuture<>();
+      current.set(reply);
+      boolean borrowed = wait.borrow(link);
+      sent.add(i);
+      assertEquals(8, wait.await(link, borrowed, reply, System.nanoTime()).length);
+      if (readers.poll(WAIT.toMillis(), TimeUnit.MILLISECONDS) == Thread.currentThread()) {
+        readHere++;
+      }
+    }
+    provider.get(WAIT.toMillis(), TimeUnit.MILLISECONDS);
+    assertTrue(readHere >= calls / 2, "the caller read " + readHere + " of its " + calls + " replies");
+    assertEquals(0, link.role.parked(), "a caller still counted as parked");
   }
 
   /** A caller waiting in a read gives reading back in time, and the link's thread reads on. */

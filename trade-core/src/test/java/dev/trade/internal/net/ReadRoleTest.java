@@ -12,8 +12,9 @@ import org.junit.jupiter.api.Timeout;
 
 /**
  * Who reads a link: a caller reads only while the link's thread lends it reading, and one at a
- * time; the link's thread reads again once callers stop, at once when one stops early while others
- * are about or when the link closes; a hand-off or the link's end releases it for good.
+ * time; the link's thread lends for a linger after a caller last came, and reads again once
+ * callers stop, at once when one stops early while others are about, when a caller waits without
+ * reading, or when the link closes; a hand-off or the link's end releases it for good.
  */
 @Timeout(30)
 class ReadRoleTest {
@@ -50,6 +51,44 @@ class ReadRoleTest {
     role.giveBack(true); // the other stops early: its reply must not wait
     assertTrue(back.get(WAIT.toMillis(), TimeUnit.MILLISECONDS));
     assertTrue(role.callerWaits(), "the first caller is still counted");
+  }
+
+  @Test
+  void aCallerThatWaitsWithoutReadingHasTheLinksThreadReadAtOnceAndLendNoMoreMeanwhile()
+      throws Exception {
+    role.borrow(); // a caller about to read: alone, it would keep reading lent
+    CompletableFuture<Boolean> back = lending();
+    role.parking(); // another waits for its reply, parked: nobody would read it
+    assertTrue(back.get(WAIT.toMillis(), TimeUnit.MILLISECONDS), "the link's thread reads again");
+    assertFalse(role.shouldLend(), "lent again while a caller waits without reading");
+    role.unparked();
+    assertTrue(role.shouldLend(), "not lent to the caller about to read");
+  }
+
+  @Test
+  void aParkingCallerWakesTheLenderOnceTheCallerThatReadsStops() throws Exception {
+    role.borrow();
+    CompletableFuture<Boolean> back = lending();
+    assertTrue(role.tryTake()); // the lone caller reads
+    role.parking(); // a second caller comes and parks
+    assertFalse(back.isDone(), "the link's thread read while a caller did");
+    role.release(); // the first has its reply
+    assertTrue(back.get(WAIT.toMillis(), TimeUnit.MILLISECONDS), "the link's thread reads again");
+  }
+
+  @Test
+  void readingIsLentForTheLingerAfterACallerLastCameAndNotBeforeOne() throws Exception {
+    ReadRole longLinger = new ReadRole(TimeUnit.MINUTES.toNanos(10));
+    assertFalse(longLinger.shouldLend(), "lent before any caller came");
+    longLinger.borrow();
+    longLinger.giveBack(false);
+    assertTrue(longLinger.shouldLend(), "a caller that just called, as a control loop's does, "
+        + "would find its next reply read by the link's thread");
+
+    ReadRole shortLinger = new ReadRole(TimeUnit.MILLISECONDS.toNanos(1));
+    shortLinger.borrow();
+    shortLinger.giveBack(false);
+    Deadline.await(WAIT, () -> !shortLinger.shouldLend(), "the linger to end");
   }
 
   @Test

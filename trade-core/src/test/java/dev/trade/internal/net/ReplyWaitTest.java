@@ -6,23 +6,38 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import dev.trade.TRADETimeoutException;
+import java.io.IOException;
 import java.net.Socket;
 import java.util.UUID;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
 /**
  * Waiting for a reply, spinning or not: the reply arrives however late it comes, a failure (the
  * deadline's, completed by {@link Deadlines}, among them) reaches the caller, and no outcome
- * leaves the wait counted (a counted caller would stop every later lone caller from spinning).
+ * leaves the wait counted (a counted caller would stop every later lone caller from reading its
+ * reply, and one counted as parked on its link would keep the link from being lent again).
  */
 class ReplyWaitTest {
   private final ReplyWait wait = new ReplyWait();
+  private final LoopbackLinks links = new LoopbackLinks();
+  private Link link;
+
+  @BeforeEach
+  void link() throws IOException {
+    link = links.link(UUID.randomUUID(), "peer", new Socket[1]);
+  }
+
+  @AfterEach
+  void close() throws IOException {
+    links.close();
+  }
 
   @Test
   void aReplyInTimeIsReturnedWhetherItComesDuringTheSpinOrAfter() throws Exception {
@@ -31,8 +46,9 @@ class ReplyWaitTest {
       byte[] body = {(byte) delayMs};
       CompletableFuture.delayedExecutor(delayMs, TimeUnit.MILLISECONDS).execute(() -> reply.complete(body));
       long sent = System.nanoTime();
-      assertArrayEquals(body, wait.await(null, false, reply, sent));
+      assertArrayEquals(body, wait.await(link, false, reply, sent));
       assertEquals(0, wait.waiting());
+      assertEquals(0, link.role.parked());
     }
   }
 
@@ -40,11 +56,12 @@ class ReplyWaitTest {
   void aDeadlineThatPassesReachesTheWaitingCaller() {
     long sent = System.nanoTime();
     ExecutionException e = assertThrows(ExecutionException.class,
-        () -> wait.await(null, false, failsAfter(100), sent));
+        () -> wait.await(link, false, failsAfter(100), sent));
     assertTrue(e.getCause() instanceof TRADETimeoutException, e.toString());
     long waited = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - sent);
     assertTrue(waited >= 90, "gave up after " + waited + " ms");
     assertEquals(0, wait.waiting());
+    assertEquals(0, link.role.parked());
   }
 
   /** A reply that fails as {@link Deadlines} fails it, after {@code ms}. */
@@ -61,31 +78,28 @@ class ReplyWaitTest {
     CompletableFuture<byte[]> reply = CompletableFuture.failedFuture(cause);
     long sent = System.nanoTime();
     ExecutionException e = assertThrows(ExecutionException.class,
-        () -> wait.await(null, false, reply, sent));
+        () -> wait.await(link, false, reply, sent));
     assertSame(cause, e.getCause());
     assertEquals(0, wait.waiting());
   }
 
   @Test
   void aLoneCallerReadsTheLinkAndNoOutcomeLeavesItCountedThere() throws Exception {
-    assumeTrue(Runtime.getRuntime().availableProcessors() > 1, "callers wait actively on 2+ cores");
-    try (LoopbackLinks links = new LoopbackLinks()) {
-      Link link = links.link(UUID.randomUUID(), "peer", new Socket[1]);
-      assertTrue(wait.borrow(link), "a lone caller reads its reply itself");
-      assertTrue(link.role.callerWaits());
-      long sent = System.nanoTime();
-      assertArrayEquals(new byte[] {1}, wait.await(link, true,
-          CompletableFuture.completedFuture(new byte[] {1}), sent));
-      assertFalse(link.role.callerWaits(), "counted after its reply");
+    assertTrue(wait.borrow(link), "a lone caller reads its reply itself");
+    assertTrue(link.role.callerWaits());
+    long sent = System.nanoTime();
+    assertArrayEquals(new byte[] {1}, wait.await(link, true,
+        CompletableFuture.completedFuture(new byte[] {1}), sent));
+    assertFalse(link.role.callerWaits(), "counted after its reply");
 
-      link.role.borrow(); // as borrow does (it may decline now: the first reply took long)
-      assertThrows(ExecutionException.class,
-          () -> wait.await(link, true, failsAfter(20), System.nanoTime()));
-      assertFalse(link.role.callerWaits(), "counted after its deadline");
+    assertTrue(wait.borrow(link), "a lone caller reads its reply itself, however long the last took");
+    assertThrows(ExecutionException.class,
+        () -> wait.await(link, true, failsAfter(20), System.nanoTime()));
+    assertFalse(link.role.callerWaits(), "counted after its deadline");
+    assertEquals(0, link.role.parked(), "counted as parked after its deadline");
 
-      link.role.borrow();
-      wait.abandon(link, true); // the call could not be sent
-      assertFalse(link.role.callerWaits(), "counted after its call was not sent");
-    }
+    link.role.borrow();
+    wait.abandon(link, true); // the call could not be sent
+    assertFalse(link.role.callerWaits(), "counted after its call was not sent");
   }
 }
