@@ -14,10 +14,13 @@ import java.util.concurrent.locks.LockSupport;
  * holds, lends reading to callers and parks ({@link #lend}); the caller reads the link itself
  * ({@link #tryTake}), as a raw socket client reads its own. A caller in a loop, back to back or
  * once a millisecond like a control loop, takes reading again with every call; once callers stop
- * for {@link #LINGER_NANOS}, or one stops early ({@link #giveBack} with {@code wake}), or a caller
- * that does not read waits for a reply ({@link #parking}), the link's thread takes reading back.
- * So a frame that arrives while no caller reads (a ping, the peer's own call) waits at most about
- * that long, and only on a link a lone caller uses.
+ * for the linger, or one stops early ({@link #giveBack} with {@code wake}), or a caller that does
+ * not read waits for a reply ({@link #parking}), the link's thread takes reading back. The linger
+ * follows the lone caller's period: twice its last, from {@link #MIN_LINGER_NANOS} to
+ * {@link #LINGER_NANOS}; a caller calling more seldom than that does not borrow
+ * ({@link #lendingPays}). So a frame that arrives while no caller reads (a ping, the peer's own
+ * call) waits at most about that long, only on a link a lone caller uses, and up to 2 ms only
+ * while a caller calls at least every 2 ms, when lending pays.
  *
  * <p>States: {@code READING} (a reading thread has it), {@code FREE} (lent, nobody reads now),
  * {@code LENT} (a caller reads), {@code ENDED} (the link's reading ended). Only the holder leaves
@@ -26,16 +29,20 @@ import java.util.concurrent.locks.LockSupport;
  */
 final class ReadRole {
   /**
-   * How long reading stays lent after a caller last borrowed or took it: longer than a 1 kHz
-   * control loop's period with its jitter, so that such a loop finds it lent at every call.
+   * The longest reading stays lent after a caller last borrowed, took or gave it back: longer
+   * than a 1 kHz control loop's pause between calls with its jitter, so that such a loop finds it
+   * lent at every call.
    */
   static final long LINGER_NANOS = TimeUnit.MILLISECONDS.toNanos(2);
+  /** The shortest: a loop calling back to back, or slower than lending pays for. */
+  static final long MIN_LINGER_NANOS = TimeUnit.MICROSECONDS.toNanos(200);
   private static final int READING = 0;
   private static final int FREE = 1;
   private static final int LENT = 2;
   private static final int ENDED = 3;
 
-  private final long linger;
+  private final long minLinger;
+  private final long maxLinger;
   private final AtomicInteger state = new AtomicInteger(READING);
   /** Callers that will read their replies themselves, from before they send until they stop. */
   private final AtomicInteger borrowers = new AtomicInteger();
@@ -43,21 +50,28 @@ final class ReadRole {
   private final AtomicInteger parked = new AtomicInteger();
   /** The thread that lent reading and waits to take it back. */
   private volatile Thread lender;
-  /** When a caller last borrowed or took reading; long ago at first. */
+  /** When a caller last borrowed, took or gave back reading; long ago at first. */
   private volatile long lastActive;
+  /** When a lone caller last called, borrowing or not; long ago at first. */
+  private volatile long lastCall;
+  /** How long reading stays lent now, after the lone caller's last pause (see the class). */
+  private volatile long linger;
   /** A caller stopped while others may wait: the lender takes reading back at once. */
   private volatile boolean wanted;
   /** The link is closed: the lender takes reading back at once, to end it. */
   private volatile boolean closing;
 
   ReadRole() {
-    this(LINGER_NANOS);
+    this(MIN_LINGER_NANOS, LINGER_NANOS);
   }
 
-  /** @param linger how long reading stays lent after a caller (tests give other lingers) */
-  ReadRole(long linger) {
-    this.linger = linger;
-    this.lastActive = System.nanoTime() - 2 * linger;
+  /** @param minLinger, maxLinger the bounds of the linger (tests give others) */
+  ReadRole(long minLinger, long maxLinger) {
+    this.minLinger = minLinger;
+    this.maxLinger = maxLinger;
+    this.linger = minLinger;
+    this.lastActive = System.nanoTime() - 2 * maxLinger;
+    this.lastCall = lastActive;
   }
 
   /** Whether a caller is about to read (for tests). */
@@ -67,8 +81,8 @@ final class ReadRole {
 
   /**
    * Whether the reading thread, with nothing left to read, should lend reading: a caller is about
-   * to read, or one borrowed or read within {@link #LINGER_NANOS} and may call again, and no
-   * caller waits for a reply that only a reading thread would read.
+   * to read, or one was about within the linger and may call again, and no caller waits for a
+   * reply that only a reading thread would read.
    */
   boolean shouldLend() {
     return parked.get() == 0
@@ -91,14 +105,15 @@ final class ReadRole {
           return false;
         }
         long idle = System.nanoTime() - lastActive;
+        long lingering = linger;
         boolean waiting = borrowers.get() > 0;
-        boolean back = wanted || closing || parked.get() > 0 || !waiting && idle >= linger;
+        boolean back = wanted || closing || parked.get() > 0 || !waiting && idle >= lingering;
         if (back && s == FREE && state.compareAndSet(FREE, READING)) {
           wanted = false;
           return true;
         }
         // Until the linger is over, or (callers about) until a caller takes, stops or wakes us.
-        LockSupport.parkNanos(this, back || waiting ? linger : linger - idle);
+        LockSupport.parkNanos(this, back || waiting ? lingering : lingering - idle);
       }
     } finally {
       if (lender == self) {
@@ -107,10 +122,29 @@ final class ReadRole {
     }
   }
 
+  /**
+   * Whether a lone caller about to call should borrow reading: only if the last lone call began
+   * no longer ago than the longest linger, so that a loop calling that often finds reading lent.
+   * A slower caller's reply is read by the link's thread, with no lending after it that would not
+   * reach its next call; it {@link #touch}es instead.
+   */
+  boolean lendingPays() {
+    return System.nanoTime() - lastCall <= maxLinger;
+  }
+
+  /** A lone caller that does not borrow calls now: the next call's period counts from here. */
+  void touch() {
+    lastCall = System.nanoTime();
+  }
+
   /** Counts a caller that will read its own reply; before it sends its call. */
   void borrow() {
     borrowers.incrementAndGet();
-    lastActive = System.nanoTime();
+    long now = System.nanoTime();
+    long period = now - lastCall; // since the last lone call began
+    linger = period > maxLinger ? minLinger : Math.max(minLinger, Math.min(maxLinger, 2 * period));
+    lastCall = now;
+    lastActive = now;
   }
 
   /**
@@ -191,6 +225,11 @@ final class ReadRole {
   boolean isLent() {
     int s = state.get();
     return s == FREE || s == LENT;
+  }
+
+  /** How long reading stays lent now (for tests). */
+  long linger() {
+    return linger;
   }
 
   /** Callers waiting for a reply over the link without reading (for tests). */

@@ -46,13 +46,17 @@ final class ReplyWait {
 
   /**
    * Before a call is sent over {@code link}: whether its caller will likely wait alone, and so
-   * read its reply itself; then it is counted on the link ({@link ReadRole#borrow}), and must pass
-   * true to {@link #await} or {@link #abandon}.
+   * read its reply itself (unless it calls more seldom than lending pays for, see
+   * {@link ReadRole#lendingPays}); then it is counted on the link ({@link ReadRole#borrow}), and
+   * must pass true to {@link #await} or {@link #abandon}.
    */
   boolean borrow(Link link) {
     if (waiting.get() == 0) {
-      link.role.borrow();
-      return true;
+      if (link.role.lendingPays()) {
+        link.role.borrow();
+        return true;
+      }
+      link.role.touch();
     }
     return false;
   }

@@ -78,17 +78,52 @@ class ReadRoleTest {
 
   @Test
   void readingIsLentForTheLingerAfterACallerLastCameAndNotBeforeOne() throws Exception {
-    ReadRole longLinger = new ReadRole(TimeUnit.MINUTES.toNanos(10));
+    long tenMinutes = TimeUnit.MINUTES.toNanos(10);
+    ReadRole longLinger = new ReadRole(tenMinutes, tenMinutes);
     assertFalse(longLinger.shouldLend(), "lent before any caller came");
     longLinger.borrow();
     longLinger.giveBack(false);
     assertTrue(longLinger.shouldLend(), "a caller that just called, as a control loop's does, "
         + "would find its next reply read by the link's thread");
 
-    ReadRole shortLinger = new ReadRole(TimeUnit.MILLISECONDS.toNanos(1));
+    long oneMs = TimeUnit.MILLISECONDS.toNanos(1);
+    ReadRole shortLinger = new ReadRole(oneMs, oneMs);
     shortLinger.borrow();
     shortLinger.giveBack(false);
     Deadline.await(WAIT, () -> !shortLinger.shouldLend(), "the linger to end");
+  }
+
+  /**
+   * The linger follows a lone caller's period: twice the last, within its bounds; a caller whose
+   * calls are further apart than the most does not borrow, since lending would not reach its next
+   * call, and a slow call it makes leaves reading unlent once its reply is read.
+   */
+  @Test
+  void theLingerIsTwiceTheCallersLastPeriodWithinItsBoundsAndSlowerCallersDoNotBorrow()
+      throws Exception {
+    long ms = TimeUnit.MILLISECONDS.toNanos(1);
+    ReadRole role = new ReadRole(ms / 5, 10 * ms);
+    assertFalse(role.lendingPays(), "no lone caller called yet");
+    role.touch(); // a lone call, not borrowing
+    assertTrue(role.lendingPays(), "called again at once");
+    role.borrow();
+    long calledAt = System.nanoTime();
+    role.giveBack(false);
+    Deadline.await(WAIT, () -> System.nanoTime() - calledAt >= 2 * ms, "a period of 2 ms");
+    assertTrue(role.lendingPays() || System.nanoTime() - calledAt > 10 * ms);
+    role.borrow();
+    long period = System.nanoTime() - calledAt;
+    long linger = role.linger();
+    if (period <= 5 * ms) { // a period stretched by a busy machine gives the most instead
+      assertTrue(linger >= 4 * ms && linger <= Math.min(10 * ms, 2 * period + ms / 10),
+          "linger " + linger + " ns after a period of " + period + " ns");
+    }
+    role.giveBack(false);
+    long calledAgain = System.nanoTime();
+    Deadline.await(WAIT, () -> System.nanoTime() - calledAgain > 11 * ms, "a period past the most");
+    assertFalse(role.lendingPays(), "a caller slower than the longest linger borrows");
+    role.touch(); // it calls without borrowing
+    assertFalse(role.shouldLend(), "reading is lent after a call that did not borrow");
   }
 
   @Test
