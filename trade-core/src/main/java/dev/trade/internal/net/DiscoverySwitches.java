@@ -6,11 +6,12 @@ import dev.trade.internal.config.Settings;
 import java.io.IOException;
 import java.net.InetSocketAddress;
 import java.util.List;
+import java.util.Set;
 import java.util.UUID;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.function.BooleanSupplier;
-import java.util.function.IntSupplier;
 import java.util.function.Predicate;
+import java.util.function.Supplier;
 
 /**
  * How a container is found: the sockets it accepts connections on and the {@link Finder} that
@@ -27,7 +28,7 @@ final class DiscoverySwitches implements AutoCloseable {
   private final String name;
   private final Connector connector;
   private final Predicate<UUID> linked;
-  private final IntSupplier reachable;
+  private final Supplier<Set<UUID>> reachable;
   private final ScheduledExecutorService timer;
   private final BooleanSupplier closed;
   // Guarded by this.
@@ -36,11 +37,11 @@ final class DiscoverySwitches implements AutoCloseable {
   /**
    * @param linked whether this container has a link to a container, or a handshake with it under
    *     way (then it is not dialled)
-   * @param reachable how many other containers routing reaches now
+   * @param reachable the other containers routing reaches now
    * @param closed whether the container has closed (then no finder is made any more)
    */
   DiscoverySwitches(Settings settings, UUID self, String name, Connector connector,
-      Predicate<UUID> linked, IntSupplier reachable, ScheduledExecutorService timer,
+      Predicate<UUID> linked, Supplier<Set<UUID>> reachable, ScheduledExecutorService timer,
       BooleanSupplier closed) {
     this.settings = settings;
     this.self = self;

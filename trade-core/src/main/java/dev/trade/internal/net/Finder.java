@@ -23,7 +23,6 @@ import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
-import java.util.function.IntSupplier;
 import java.util.function.Predicate;
 import java.util.function.Supplier;
 
@@ -46,8 +45,13 @@ final class Finder implements AutoCloseable {
   private static final long DIAL_GRACE_MS = 2_000;
   private static final long SWEEP_MS = 1_000;
   private static final long SETTLE_MS = 100;
-  /** The longest a newcomer waits to hear most of the system before it chooses (see holding). */
-  static final long HOLD_MAX_NANOS = TimeUnit.SECONDS.toNanos(3);
+  /**
+   * The longest a newcomer waits to hear the containers routing reaches before it chooses, in
+   * announcement intervals (see {@link #holding}): each one within discovery's reach announces
+   * itself once an interval, so one interval hears them all, and the second is slack for a busy
+   * machine.
+   */
+  static final int HOLD_MAX_INTERVALS = 2;
   /** How long a forgotten container's old announcements are ignored (the replay guard's window). */
   private static final long FORGET_NANOS = TimeUnit.SECONDS.toNanos(60);
 
@@ -58,11 +62,12 @@ final class Finder implements AutoCloseable {
   /** This container's name, for the DEBUG lines that trace a join. */
   private final String name;
   private final Predicate<UUID> linked;
-  private final IntSupplier reachable;
+  private final Supplier<Set<UUID>> reachable;
   private final Connector connector;
   private final ScheduledExecutorService timer;
   private final Discovery discovery;
   private final long expiry;
+  private final long holdMax;
   private final Map<UUID, Long> dialling = new ConcurrentHashMap<>();
   private final Map<UUID, Heard> known = new ConcurrentHashMap<>();
   /** Containers that left: the last announcement sequence seen and when (nanoTime). */
@@ -76,7 +81,7 @@ final class Finder implements AutoCloseable {
   private long firstChoiceAt;
 
   Finder(Settings settings, UUID self, String name, Supplier<List<InetSocketAddress>> addresses,
-      Predicate<UUID> linked, IntSupplier reachable, Connector connector,
+      Predicate<UUID> linked, Supplier<Set<UUID>> reachable, Connector connector,
       ScheduledExecutorService timer, boolean broadcast, boolean discover) throws IOException {
     this.self = self;
     this.name = name;
@@ -85,6 +90,7 @@ final class Finder implements AutoCloseable {
     this.connector = connector;
     this.timer = timer;
     this.expiry = 3 * settings.broadcastInterval().toNanos() + TimeUnit.MILLISECONDS.toNanos(SWEEP_MS);
+    this.holdMax = HOLD_MAX_INTERVALS * settings.broadcastInterval().toNanos();
     this.discovery = Discovery.builder()
         .systemId(settings.tradeSysId())
         .credentials(settings.credentials())
@@ -252,12 +258,14 @@ final class Finder implements AutoCloseable {
 
   /**
    * Whether a newcomer waits before choosing out of all it heard, beyond its first contact (and the
-   * {@link #early} choice): it hears the others over seconds, and each choice made on part of them
-   * dials containers (ring successors above all) that a later choice does not choose, links that
-   * stay. Routing tells, once the first link's states are applied, how many containers there are:
-   * it waits until then (until routing reaches half of those heard) and until it has heard nine in
-   * ten of those reached, or for {@link #HOLD_MAX_NANOS} after the first choice (containers beyond
-   * discovery's reach, behind a bridging container, are never heard). Guarded by this.
+   * {@link #early} choice): it hears the others over an announcement interval, and a choice made on
+   * part of them dials containers that the choice on all of them does not: a finger's place in its
+   * interval is hashed over the containers in it, and the ring's successors shift, so one container
+   * not heard yet moves them. Those links stay. Routing tells, once the first link's states are
+   * applied, which containers there are: it waits until then (until routing reaches half of those
+   * heard) and until it has heard every one routing reaches, or for {@link #HOLD_MAX_INTERVALS}
+   * announcement intervals after the first choice (containers beyond discovery's reach, behind a
+   * bridging container, are never heard). Guarded by this.
    */
   private boolean holding() {
     long now = System.nanoTime();
@@ -265,21 +273,23 @@ final class Finder implements AutoCloseable {
       firstChoiceAt = now;
       return false;
     }
-    return holds(now - firstChoiceAt, known.size(), reachable.getAsInt());
+    return holds(now - firstChoiceAt, holdMax, known.keySet(), reachable.get());
   }
 
   /**
    * The rule of {@link #holding}: whether to wait, {@code sinceFirst} nanoseconds after the first
-   * choice, having heard {@code heard} containers while routing reaches {@code reachable}.
+   * choice and at most {@code holdMax}, having heard {@code heard} while routing reaches
+   * {@code reachable}.
    */
-  static boolean holds(long sinceFirst, int heard, int reachable) {
-    if (sinceFirst >= HOLD_MAX_NANOS || heard <= 1) {
+  static boolean holds(long sinceFirst, long holdMax, Set<UUID> heard, Set<UUID> reachable) {
+    if (sinceFirst >= holdMax || heard.size() <= 1) {
       return false; // waited long enough, or nothing to choose between
     }
     // Routing far behind discovery (the first link's states not applied yet; a few containers
-    // heard but not reachable are normal in a growing system: they have just started), or most
-    // not heard yet.
-    return reachable * 2L < heard || heard * 10L < reachable * 9L;
+    // heard but not reachable are normal in a growing system: they have just started), or one
+    // that routing reaches not heard yet. Choosing without it would not choose what the containers
+    // that answered chose for this one (they know it), and would dial others.
+    return reachable.size() * 2L < heard.size() || !heard.containsAll(reachable);
   }
 
   /**

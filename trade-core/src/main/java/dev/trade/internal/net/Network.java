@@ -134,7 +134,7 @@ public final class Network implements AutoCloseable {
           }
         });
     this.discovery = new DiscoverySwitches(settings, self, name, connector, this::linkedOrLinking,
-        replication::reachableCount, timer, () -> closed);
+        replication::reachable, timer, () -> closed);
     registry.addListener(
         (added, removed) -> replication.localChanged(added, removed, this::onControl));
   }

@@ -98,9 +98,9 @@ final class Replication {
     return filter.isStale(from, type, buf, off, len);
   }
 
-  /** How many other containers there are routes to now. Any thread. */
-  int reachableCount() {
-    return routing.reachableCount();
+  /** The other containers there are routes to now: an immutable snapshot. Any thread. */
+  Set<UUID> reachable() {
+    return routing.reachable();
   }
 
   /** The neighbour on the shortest path to {@code container}, or null. Any thread. */

@@ -4,6 +4,7 @@ import dev.trade.internal.registry.Registry;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.UUID;
 import java.util.function.BiConsumer;
 import java.util.function.Consumer;
@@ -73,9 +74,9 @@ final class Routing {
     return nextHops.get(container);
   }
 
-  /** How many other containers there are routes to now. Any thread. */
-  int reachableCount() {
-    return nextHops.size();
+  /** The other containers there are routes to now: an immutable snapshot. Any thread. */
+  Set<UUID> reachable() {
+    return nextHops.keySet();
   }
 
   /** The route to {@code container} as computed last, or null. */

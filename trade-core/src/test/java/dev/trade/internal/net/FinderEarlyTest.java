@@ -13,7 +13,7 @@ import org.junit.jupiter.api.Test;
 /**
  * While a newcomer holds its choice (it has heard few of the containers routing will show it), it
  * dials at once the overlay's choice out of the containers that answered it: before, it lived on
- * one link for up to {@link Finder#HOLD_MAX_NANOS}, all of it through a neighbour that, while a
+ * one link for up to {@link Finder#HOLD_MAX_INTERVALS} announcement intervals, all of it through a neighbour that, while a
  * large system starts, can be seconds behind. No early link may be one it would not make later.
  */
 class FinderEarlyTest {
