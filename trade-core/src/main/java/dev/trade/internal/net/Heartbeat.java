@@ -64,10 +64,18 @@ final class Heartbeat {
   }
 
   void start() {
-    lastBeat = System.nanoTime();
-    resumed = lastBeat;
+    started(System.nanoTime());
     timer.scheduleAtFixedRate(() -> beat(System.nanoTime()), interval, interval,
         TimeUnit.NANOSECONDS);
+  }
+
+  /**
+   * Counts beats from {@code now} (nanoTime), without scheduling any: {@link #start} does both;
+   * tests that pass their own times to {@link #beat} call this alone.
+   */
+  void started(long now) {
+    lastBeat = now;
+    resumed = now;
   }
 
   /** One beat at {@code now} (nanoTime); package-private for tests, which pass their own times. */

@@ -66,7 +66,7 @@ final class Link {
    * Whether the link's thread or a caller waiting for its reply reads; such a caller counts itself
    * ({@link ReadRole#borrow}) before it sends its call.
    */
-  final ReadRole role = new ReadRole();
+  final ReadRole role;
   private volatile ServedCalls served;
   volatile long lastReceived = System.nanoTime();
   private final Runnable arrived = () -> lastReceived = System.nanoTime();
@@ -78,6 +78,13 @@ final class Link {
   volatile boolean pinging;
 
   Link(Socket socket, Handshake.Peer peer, boolean initiatedHere, int maxFrame) throws IOException {
+    this(socket, peer, initiatedHere, maxFrame, new ReadRole());
+  }
+
+  /** As above, with who reads the link decided by {@code role} (tests give its linger and clock). */
+  Link(Socket socket, Handshake.Peer peer, boolean initiatedHere, int maxFrame, ReadRole role)
+      throws IOException {
+    this.role = role;
     this.socket = socket;
     this.peerId = peer.containerId();
     this.peerKey = peerId.toString();

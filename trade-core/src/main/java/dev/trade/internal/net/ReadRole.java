@@ -2,6 +2,7 @@ package dev.trade.internal.net;
 
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.LongSupplier;
 import java.util.concurrent.locks.LockSupport;
 
 /**
@@ -43,6 +44,8 @@ final class ReadRole {
 
   private final long minLinger;
   private final long maxLinger;
+  /** {@link System#nanoTime}, or a test's clock. */
+  private final LongSupplier clock;
   private final AtomicInteger state = new AtomicInteger(READING);
   /** Callers that will read their replies themselves, from before they send until they stop. */
   private final AtomicInteger borrowers = new AtomicInteger();
@@ -62,15 +65,19 @@ final class ReadRole {
   private volatile boolean closing;
 
   ReadRole() {
-    this(MIN_LINGER_NANOS, LINGER_NANOS);
+    this(MIN_LINGER_NANOS, LINGER_NANOS, System::nanoTime);
   }
 
-  /** @param minLinger, maxLinger the bounds of the linger (tests give others) */
-  ReadRole(long minLinger, long maxLinger) {
+  /**
+   * @param minLinger, maxLinger the bounds of the linger (tests give others)
+   * @param clock the time in nanoseconds, as {@link System#nanoTime} (tests give their own)
+   */
+  ReadRole(long minLinger, long maxLinger, LongSupplier clock) {
     this.minLinger = minLinger;
     this.maxLinger = maxLinger;
+    this.clock = clock;
     this.linger = minLinger;
-    this.lastActive = System.nanoTime() - 2 * maxLinger;
+    this.lastActive = clock.getAsLong() - 2 * maxLinger;
     this.lastCall = lastActive;
   }
 
@@ -86,7 +93,7 @@ final class ReadRole {
    */
   boolean shouldLend() {
     return parked.get() == 0
-        && (borrowers.get() > 0 || System.nanoTime() - lastActive < linger);
+        && (borrowers.get() > 0 || clock.getAsLong() - lastActive < linger);
   }
 
   /**
@@ -104,7 +111,7 @@ final class ReadRole {
         if (s == READING || s == ENDED) {
           return false;
         }
-        long idle = System.nanoTime() - lastActive;
+        long idle = clock.getAsLong() - lastActive;
         long lingering = linger;
         boolean waiting = borrowers.get() > 0;
         boolean back = wanted || closing || parked.get() > 0 || !waiting && idle >= lingering;
@@ -129,18 +136,18 @@ final class ReadRole {
    * reach its next call; it {@link #touch}es instead.
    */
   boolean lendingPays() {
-    return System.nanoTime() - lastCall <= maxLinger;
+    return clock.getAsLong() - lastCall <= maxLinger;
   }
 
   /** A lone caller that does not borrow calls now: the next call's period counts from here. */
   void touch() {
-    lastCall = System.nanoTime();
+    lastCall = clock.getAsLong();
   }
 
   /** Counts a caller that will read its own reply; before it sends its call. */
   void borrow() {
     borrowers.incrementAndGet();
-    long now = System.nanoTime();
+    long now = clock.getAsLong();
     long period = now - lastCall; // since the last lone call began
     linger = period > maxLinger ? minLinger : Math.max(minLinger, Math.min(maxLinger, 2 * period));
     lastCall = now;
@@ -172,7 +179,7 @@ final class ReadRole {
    *     replies must not wait for the linger
    */
   void giveBack(boolean wake) {
-    lastActive = System.nanoTime();
+    lastActive = clock.getAsLong();
     borrowers.decrementAndGet();
     if (wake) {
       wanted = true;
@@ -183,7 +190,7 @@ final class ReadRole {
   /** A caller takes reading if nobody reads; then it must {@link #release} it or end it. */
   boolean tryTake() {
     if (state.get() == FREE && state.compareAndSet(FREE, LENT)) {
-      lastActive = System.nanoTime();
+      lastActive = clock.getAsLong();
       return true;
     }
     return false;

@@ -80,12 +80,10 @@ class DiscoveryTest {
     start("alpha", "s3cret", "a", 7001, ra, b -> b.interval(NEVER));
     ra.awaitDrops(Reason.OWN, Announcer.BURST_MILLIS.length); // a's start burst is over
     Recorder rb = new Recorder();
-    long t0 = System.nanoTime();
     start("alpha", "s3cret", "b", 7002, rb, b -> b.interval(NEVER));
     ra.awaitHeard("b", 1);
-    rb.awaitHeard("a", 1); // only possible because a answers a newcomer
-    long millis = (System.nanoTime() - t0) / 1_000_000;
-    assertTrue(millis < 1000, "took " + millis + " ms");
+    // Only possible because a answers a newcomer: its next interval is ten minutes away.
+    rb.awaitHeard("a", 1);
   }
 
   @Test
@@ -97,11 +95,10 @@ class DiscoveryTest {
     ra.awaitHeard("b", Announcer.BURST_MILLIS.length); // b's start burst is over
     rb.awaitHeard("a", 1);
     Recorder rc = new Recorder();
-    long t0 = System.nanoTime();
     start("alpha", "s3cret", "c", 7003, rc, x -> x.interval(NEVER));
+    // Answers: the next intervals of a and b are ten minutes away.
     rc.awaitHeard("a", 1);
     rc.awaitHeard("b", 1);
-    assertTrue((System.nanoTime() - t0) / 1_000_000 < 1000, "the answers came at once");
     // b's burst was over before c started: the first packet of b that c heard is b's answer.
     List<Announcement> heardByC = rc.heard();
     int first = heardByC.indexOf(heardByC.stream().filter(x -> x.containerId().equals("b"))

@@ -30,7 +30,7 @@ class BusyControlTest {
     p.setProperty("STARTACCEPTINGCONNECTIONS", "true");
     p.setProperty("SERVERIPS", "127.0.0.1@0");
     p.setProperty("HEARTBEATINTERVAL", "100");
-    p.setProperty("FAILURETIMEOUT", "600");
+    p.setProperty("FAILURETIMEOUT", "1000");
     UUID id = UUID.randomUUID();
     Codec codec = new Codec(AllowList.withDefaults(), Limits.DEFAULT, InfoBinding.NONE);
     CountDownLatch release = new CountDownLatch(1);
@@ -42,7 +42,7 @@ class BusyControlTest {
         peer.handshake("newcomer");
         // Over twice FAILURETIMEOUT: the container pings the link, and reads ours (else it would
         // close the link as silent, and readFrame would fail).
-        long until = System.nanoTime() + Duration.ofMillis(1_500).toNanos();
+        long until = System.nanoTime() + Duration.ofMillis(2_500).toNanos();
         int pings = 0;
         while (System.nanoTime() - until < 0) {
           byte[] frame = peer.readFrame();
@@ -54,7 +54,7 @@ class BusyControlTest {
         release.countDown();
         // Once the control thread is free, the link is registered: the container's link state
         // follows.
-        long deadline = System.nanoTime() + Duration.ofSeconds(5).toNanos();
+        long deadline = System.nanoTime() + Duration.ofSeconds(30).toNanos();
         byte[] frame;
         do {
           frame = peer.readFrame();

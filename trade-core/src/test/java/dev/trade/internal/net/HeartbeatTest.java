@@ -12,11 +12,14 @@ import java.net.ServerSocket;
 import java.net.Socket;
 import java.time.Duration;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
 import java.util.UUID;
 import java.util.concurrent.AbstractExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ScheduledFuture;
+import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
@@ -38,6 +41,8 @@ class HeartbeatTest {
   private final Tasks workers = new Tasks();
   private ServerSocket server;
   private Heartbeat heartbeat;
+  /** When the heartbeat started counting (nanoTime); the tests' beats come after it. */
+  private long started;
 
   /** Keeps the tasks it is given, to run them when the test says. */
   private static final class Tasks extends AbstractExecutorService {
@@ -88,9 +93,10 @@ class HeartbeatTest {
       links.add(new Link(near, new Handshake.Peer(UUID.randomUUID(), "p" + i, "host", List.of(),
           null), true, 1 << 20));
     }
-    // Beats come from the test only: the interval is far longer than any test.
+    // Beats come from the test only, at the times it passes: none is scheduled.
     heartbeat = new Heartbeat(links, Duration.ofMillis(1000), Duration.ofMillis(3000), timer, workers);
-    heartbeat.start();
+    started = System.nanoTime();
+    heartbeat.started(started);
   }
 
   @AfterEach
@@ -111,7 +117,7 @@ class HeartbeatTest {
 
   @Test
   void aLateBeatMeansThisProcessStalledAndClosesNothing() {
-    long t = System.nanoTime();
+    long t = started;
     quietSince(t);
     // The next beat was due at t + 1 s and comes at t + 4 s: the peers' frames wait unread.
     heartbeat.beat(t + 4_000 * MS);
@@ -126,7 +132,7 @@ class HeartbeatTest {
 
   @Test
   void beatsOnTimeCloseSilentLinks() {
-    long t = System.nanoTime();
+    long t = started;
     quietSince(t);
     for (int k = 1; k <= 3; k++) {
       heartbeat.beat(t + k * 1_000 * MS);
@@ -136,7 +142,7 @@ class HeartbeatTest {
 
   @Test
   void idleLinksArePingedByOneTaskPerBeat() throws IOException {
-    long t = System.nanoTime();
+    long t = started;
     quietSince(t);
     Link busy = links.get(0);
     busy.lastSent = t + 900 * MS; // sent something 100 ms before the beat
@@ -151,7 +157,7 @@ class HeartbeatTest {
 
   @Test
   void aLinkWhosePingIsStillUnderWayIsLeftOut() throws IOException {
-    long t = System.nanoTime();
+    long t = started;
     quietSince(t);
     Link stuck = links.get(3);
     stuck.pinging = true; // as if its ping blocked on a full socket buffer
@@ -161,6 +167,36 @@ class HeartbeatTest {
       assertEquals(i != 3, pingArrived(sockets.get(2 * i + 1)), "link " + i + " pinged");
     }
     assertTrue(stuck.pinging, "the flag belongs to the ping under way");
+  }
+
+  /**
+   * A link that would pass FAILURETIMEOUT before the next beat is looked at exactly when it does,
+   * so that a silent peer is declared gone after FAILURETIMEOUT, not up to an interval later.
+   */
+  @Test
+  void aLinkThatGoesSilentForTooLongBeforeTheNextBeatIsLookedAtThen() {
+    List<Long> delays = new ArrayList<>();
+    ScheduledThreadPoolExecutor recording = new ScheduledThreadPoolExecutor(1) {
+      @Override
+      public ScheduledFuture<?> schedule(Runnable task, long delay, TimeUnit unit) {
+        delays.add(unit.toMillis(delay));
+        return super.schedule(task, 1, TimeUnit.DAYS); // never run: the test only reads the delay
+      }
+    };
+    try {
+      Heartbeat beats = new Heartbeat(links, Duration.ofMillis(1000), Duration.ofMillis(3000),
+          recording, workers);
+      beats.started(started);
+      quietSince(started);
+      beats.beat(started + 1_000 * MS);
+      assertEquals(List.of(), delays, "silent for 1 s of 3: the next beats look");
+      beats.beat(started + 2_000 * MS);
+      assertEquals(List.of(), delays, "silent for 2 s of 3: the next beat comes at 3 s");
+      beats.beat(started + 2_600 * MS);
+      assertEquals(Collections.nCopies(LINKS, 400L), delays, "each looked at again at 3 s");
+    } finally {
+      recording.shutdownNow();
+    }
   }
 
   /** Whether a PING frame is waiting on {@code far}, without blocking for long. */

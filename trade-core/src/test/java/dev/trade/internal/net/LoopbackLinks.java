@@ -37,6 +37,15 @@ final class LoopbackLinks implements AutoCloseable {
    * @param far gets, at index 0, the neighbour's socket; a read that waits 5 s fails
    */
   Link link(UUID id, String name, Socket[] far) throws IOException {
+    return link(id, name, far, new ReadRole());
+  }
+
+  /**
+   * A link to a neighbour with this id and name, read as {@code role} decides.
+   *
+   * @param far gets, at index 0, the neighbour's socket; a read that waits 5 s fails
+   */
+  Link link(UUID id, String name, Socket[] far, ReadRole role) throws IOException {
     try (ServerSocket server = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
       Socket near = new Socket();
       near.connect(new InetSocketAddress(InetAddress.getLoopbackAddress(), server.getLocalPort()));
@@ -45,7 +54,8 @@ final class LoopbackLinks implements AutoCloseable {
       sockets.add(other);
       other.setSoTimeout(5_000); // a frame that went elsewhere fails the read, not hangs it
       far[0] = other;
-      Link link = new Link(near, new Handshake.Peer(id, name, "host", List.of(), null), true, 1 << 20);
+      Link link = new Link(near, new Handshake.Peer(id, name, "host", List.of(), null), true,
+          1 << 20, role);
       links.add(link);
       return link;
     }

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.time.Duration;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
@@ -79,7 +80,7 @@ class ReadRoleTest {
   @Test
   void readingIsLentForTheLingerAfterACallerLastCameAndNotBeforeOne() throws Exception {
     long tenMinutes = TimeUnit.MINUTES.toNanos(10);
-    ReadRole longLinger = new ReadRole(tenMinutes, tenMinutes);
+    ReadRole longLinger = new ReadRole(tenMinutes, tenMinutes, System::nanoTime);
     assertFalse(longLinger.shouldLend(), "lent before any caller came");
     longLinger.borrow();
     longLinger.giveBack(false);
@@ -87,7 +88,7 @@ class ReadRoleTest {
         + "would find its next reply read by the link's thread");
 
     long oneMs = TimeUnit.MILLISECONDS.toNanos(1);
-    ReadRole shortLinger = new ReadRole(oneMs, oneMs);
+    ReadRole shortLinger = new ReadRole(oneMs, oneMs, System::nanoTime);
     shortLinger.borrow();
     shortLinger.giveBack(false);
     Deadline.await(WAIT, () -> !shortLinger.shouldLend(), "the linger to end");
@@ -96,34 +97,41 @@ class ReadRoleTest {
   /**
    * The linger follows a lone caller's period: twice the last, within its bounds; a caller whose
    * calls are further apart than the most does not borrow, since lending would not reach its next
-   * call, and a slow call it makes leaves reading unlent once its reply is read.
+   * call, and a slow call it makes leaves reading unlent once its reply is read. On a clock of the
+   * test's: the periods are exact, whatever the machine does meanwhile.
    */
   @Test
-  void theLingerIsTwiceTheCallersLastPeriodWithinItsBoundsAndSlowerCallersDoNotBorrow()
-      throws Exception {
+  void theLingerIsTwiceTheCallersLastPeriodWithinItsBoundsAndSlowerCallersDoNotBorrow() {
     long ms = TimeUnit.MILLISECONDS.toNanos(1);
-    ReadRole role = new ReadRole(ms / 5, 10 * ms);
+    AtomicLong now = new AtomicLong(1_000 * ms);
+    ReadRole role = new ReadRole(ms / 5, 10 * ms, now::get);
     assertFalse(role.lendingPays(), "no lone caller called yet");
     role.touch(); // a lone call, not borrowing
     assertTrue(role.lendingPays(), "called again at once");
-    role.borrow();
-    long calledAt = System.nanoTime();
+    now.addAndGet(10 * ms);
+    assertTrue(role.lendingPays(), "called again after the longest linger");
+    role.borrow(); // a period of 10 ms: the most
+    assertEquals(10 * ms, role.linger());
     role.giveBack(false);
-    Deadline.await(WAIT, () -> System.nanoTime() - calledAt >= 2 * ms, "a period of 2 ms");
-    assertTrue(role.lendingPays() || System.nanoTime() - calledAt > 10 * ms);
-    role.borrow();
-    long period = System.nanoTime() - calledAt;
-    long linger = role.linger();
-    if (period <= 5 * ms) { // a period stretched by a busy machine gives the most instead
-      assertTrue(linger >= 4 * ms && linger <= Math.min(10 * ms, 2 * period + ms / 10),
-          "linger " + linger + " ns after a period of " + period + " ns");
-    }
+    now.addAndGet(2 * ms);
+    assertTrue(role.lendingPays());
+    role.borrow(); // a period of 2 ms
+    assertEquals(4 * ms, role.linger());
     role.giveBack(false);
-    long calledAgain = System.nanoTime();
-    Deadline.await(WAIT, () -> System.nanoTime() - calledAgain > 11 * ms, "a period past the most");
+    now.addAndGet(ms / 20);
+    role.borrow(); // back to back: the least
+    assertEquals(ms / 5, role.linger());
+    role.giveBack(false);
+    assertTrue(role.shouldLend(), "lent within the linger after the caller gave reading back");
+    now.addAndGet(ms / 5);
+    assertFalse(role.shouldLend(), "lent after the linger");
+    now.addAndGet(10 * ms);
     assertFalse(role.lendingPays(), "a caller slower than the longest linger borrows");
     role.touch(); // it calls without borrowing
     assertFalse(role.shouldLend(), "reading is lent after a call that did not borrow");
+    now.addAndGet(20 * ms);
+    role.borrow(); // a period past the most: lending would not reach the next call
+    assertEquals(ms / 5, role.linger());
   }
 
   @Test
