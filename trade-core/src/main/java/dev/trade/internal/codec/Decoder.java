@@ -23,7 +23,10 @@ import java.util.UUID;
 /**
  * Reads one value from a {@link ByteSource}: the state of a single {@link Codec#read} call. Every
  * count is checked against {@link Limits} and against the bytes actually left before anything is
- * allocated, and every nesting level against {@code maxDepth}. Not thread-safe.
+ * allocated, and every nesting level against {@code maxDepth}. Counts are checked together, not
+ * each alone: the elements still to come of every container being read need their bytes too
+ * ({@link #pending}), so a value of nested lists, each claiming about as many elements as bytes
+ * are left, cannot make each level pre-size a collection for the same bytes. Not thread-safe.
  */
 final class Decoder {
   final ByteSource in;
@@ -34,6 +37,11 @@ final class Decoder {
   private final TypeCache types;
   private final boolean javaSerialization;
   private int depth;
+  /**
+   * The least bytes that the elements still to come of the containers being read need: those
+   * bytes are taken, and a count inside an element may claim only what is left beside them.
+   */
+  private long pending;
 
   Decoder(ByteSource in, Limits limits, AllowList allowList, InfoBinding info, ClassLoader loader,
       TypeCache types, boolean javaSerialization) {
@@ -120,7 +128,8 @@ final class Decoder {
 
   /**
    * Reads an element count and checks it against maxElements and against the bytes left, given
-   * that every element takes at least {@code minBytes}.
+   * that every element takes at least {@code minBytes}, beside the bytes that the elements still
+   * to come of the containers around it need.
    */
   int readCount(int minBytes) throws MalformedValueException {
     int n = in.readVarUInt();
@@ -128,11 +137,29 @@ final class Decoder {
       throw new MalformedValueException("count " + n + " exceeds the limit of "
           + limits.maxElements() + " elements at offset " + in.at(0));
     }
-    if ((long) n * minBytes > in.remaining()) {
+    long needs = (long) n * minBytes;
+    if (needs + pending > in.remaining()) {
       throw new MalformedValueException("count " + n + " at offset " + in.at(0)
-          + " needs at least " + (long) n * minBytes + " bytes, " + in.remaining() + " left");
+          + " needs at least " + needs + " bytes"
+          + (pending == 0 ? "" : " beside the " + pending + " that the rest of the values around it need")
+          + ", " + in.remaining() + " left");
     }
     return n;
+  }
+
+  /**
+   * {@link #readCount}, for a container whose elements are values read in turn: their bytes are
+   * counted as {@link #pending} until each is read ({@link #nextElement}).
+   */
+  int readElements(int minBytes) throws MalformedValueException {
+    int n = readCount(minBytes);
+    pending += (long) n * minBytes;
+    return n;
+  }
+
+  /** The next of the elements counted by {@link #readElements} is read now. */
+  void nextElement(int minBytes) {
+    pending -= minBytes;
   }
 
   /** Enters a container; fails if that nests deeper than maxDepth. */
@@ -153,6 +180,20 @@ final class Decoder {
 
   void resetDepth(int depth) {
     this.depth = depth;
+  }
+
+  /**
+   * Reads a value bounded by its own length (an annotation entry): counts inside it are checked
+   * against its bytes alone, and what the values around it need is taken again afterwards.
+   */
+  long suspendPending() {
+    long p = pending;
+    pending = 0;
+    return p;
+  }
+
+  void resumePending(long pending) {
+    this.pending = pending;
   }
 
   /**
@@ -194,10 +235,11 @@ final class Decoder {
   }
 
   private List<Object> readList() throws TRADESerializationException {
-    int n = readCount(1);
+    int n = readElements(1);
     enter();
     List<Object> list = new ArrayList<>(n);
     for (int i = 0; i < n; i++) {
+      nextElement(1);
       list.add(readValue());
     }
     depth--;
@@ -205,10 +247,11 @@ final class Decoder {
   }
 
   private Set<Object> readSet() throws TRADESerializationException {
-    int n = readCount(1);
+    int n = readElements(1);
     enter();
     Set<Object> set = new LinkedHashSet<>(capacity(n));
     for (int i = 0; i < n; i++) {
+      nextElement(1);
       set.add(readValue());
     }
     depth--;
@@ -216,10 +259,11 @@ final class Decoder {
   }
 
   private Map<Object, Object> readMap() throws TRADESerializationException {
-    int n = readCount(2);
+    int n = readElements(2);
     enter();
     Map<Object, Object> map = new LinkedHashMap<>(capacity(n));
     for (int i = 0; i < n; i++) {
+      nextElement(2);
       Object key = readValue();
       map.put(key, readValue());
     }
@@ -240,10 +284,11 @@ final class Decoder {
     if (componentName.startsWith("[".repeat(TypeNames.MAX_DIMENSIONS))) {
       throw new MalformedValueException("array of more than 255 dimensions");
     }
-    int n = readCount(1);
+    int n = readElements(1);
     enter();
     Object[] array = (Object[]) Array.newInstance(component, n);
     for (int i = 0; i < n; i++) {
+      nextElement(1);
       Object element = readValue();
       if (element != null && !component.isInstance(element)) {
         throw new TRADESerializationException("Cannot decode a " + componentName + "[]: element "

@@ -114,6 +114,7 @@ final class DescriptorCodec {
     int end = in.pos + length;
     int savedLimit = in.limit;
     int savedDepth = d.depth();
+    long savedPending = d.suspendPending();
     in.limit = end;
     try {
       int tag = in.buf[in.pos] & 0xFF;
@@ -135,6 +136,7 @@ final class DescriptorCodec {
       in.limit = savedLimit;
       in.pos = end;
       d.resetDepth(savedDepth);
+      d.resumePending(savedPending);
     }
   }
 }

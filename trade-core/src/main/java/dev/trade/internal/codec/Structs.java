@@ -68,10 +68,11 @@ final class Structs {
   /** Reads {@code count, (name, value)*} into {@code values}; returns which names were present. */
   private static boolean[] readFields(Decoder d, ClassModel m, Object[] values)
       throws TRADESerializationException {
-    int n = d.readCount(2);
+    int n = d.readElements(2);
     d.enter();
     boolean[] present = new boolean[values.length];
     for (int i = 0; i < n; i++) {
+      d.nextElement(2);
       String name = d.readName();
       Object value = d.readValue();
       Integer index = m.index.get(name);

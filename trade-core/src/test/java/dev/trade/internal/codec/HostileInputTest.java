@@ -246,6 +246,112 @@ class HostileInputTest {
     assertMalformed(codec, codec.encode(javaDeep));
   }
 
+  /**
+   * Lists nested 60 deep, each claiming about as many elements as bytes are left: each count
+   * alone fits, and each level pre-sized a list for it (about 92 MB for these 384 KiB). Counts are
+   * now checked together, so the second level's claim is refused before anything is allocated.
+   */
+  @Test
+  void nestedCountClaimsAreBoundedTogether() {
+    int size = 384 << 10;
+    ByteSink out = new ByteSink();
+    for (int level = 0; level < 60; level++) {
+      out.writeByte(Tags.LIST);
+      out.writeVarUInt(size - 4 * (level + 1)); // about what is left after this count
+    }
+    while (out.size() < size) {
+      out.writeByte(Tags.NULL);
+    }
+    byte[] bytes = out.toByteArray();
+    try {
+      Object v = TestTypes.codec(new Limits(1 << 20, 64, 1 << 20, 100)).decode(bytes, loader());
+      fail("decoded " + v);
+    } catch (TRADESerializationException e) {
+      // Refused at the second level's count (it ends at offset 8), before its list was allocated.
+      assertTrue(e instanceof MalformedValueException, e::toString);
+      assertTrue(e.getMessage().matches("count \\d+ at offset 8 needs at least \\d+ bytes beside "
+          + "the \\d+ that the rest of the values around it need, \\d+ left"), e::getMessage);
+    }
+    // The example of docs/protocol.md: the inner list's 3 and the outer list's 2 to come need 5
+    // bytes, and 3 are left; with an inner list of 1 they fit.
+    assertMalformed(codec, HexFormat.of().parseHex("20032003000000"));
+    assertEquals(Arrays.asList(Arrays.asList((Object) null), null, null),
+        assertDecodes("20032001000000"));
+    // Nesting that the bytes do back still decodes: a list of lists of lists.
+    List<Object> nested = List.of(List.of(List.of(1, 2), List.of()), List.of(3), List.of());
+    assertTrue(nested.equals(decode(nested)));
+  }
+
+  /**
+   * Sets nested in sets, each holding the next level twice: every level doubles the hash codes
+   * computed while reading (20 levels took 0.45 s of a core; 50 far more than a call's deadline).
+   * A Java-serialized value nests at most JavaSerialization.MAX_DEPTH levels, so such a value is
+   * refused at once, while one within the bound decodes quickly.
+   */
+  @Test
+  void aHashSetBombInAJavaSerializedValueIsRefusedByItsDepth() throws Exception {
+    byte[] bomb = javaValue(hashSetBomb(24)); // 3.6 s of a core when it was decoded
+    long start = System.nanoTime();
+    try {
+      codec.decode(bomb, loader());
+      fail("a hash-set bomb 24 levels deep was decoded");
+    } catch (MalformedValueException e) {
+      assertTrue(e.getMessage().contains(JavaSerialization.MAX_DEPTH + " levels"), e::getMessage);
+    }
+    System.out.printf("a 24-level hash-set bomb was refused in %.1f ms%n",
+        (System.nanoTime() - start) / 1e6);
+    Object within = codec.decode(javaValue(hashSetBomb(JavaSerialization.MAX_DEPTH - 2)), loader());
+    assertTrue(within instanceof java.util.HashSet);
+  }
+
+  /** The nested sets of a serialization bomb, {@code levels} deep. */
+  private static java.util.Set<Object> hashSetBomb(int levels) {
+    java.util.Set<Object> root = new java.util.HashSet<>();
+    java.util.Set<Object> s1 = root;
+    java.util.Set<Object> s2 = new java.util.HashSet<>();
+    for (int i = 0; i < levels; i++) {
+      java.util.Set<Object> t1 = new java.util.HashSet<>();
+      java.util.Set<Object> t2 = new java.util.HashSet<>();
+      t1.add("foo"); // t1 differs from t2
+      s1.add(t1);
+      s1.add(t2);
+      s2.add(t1);
+      s2.add(t2);
+      s1 = t1;
+      s2 = t2;
+    }
+    return root;
+  }
+
+  /** {@code value} as a JAVA value: the tag, the length and the serialized bytes. */
+  private static byte[] javaValue(Object value) throws java.io.IOException {
+    java.io.ByteArrayOutputStream bytes = new java.io.ByteArrayOutputStream();
+    try (java.io.ObjectOutputStream out = new java.io.ObjectOutputStream(bytes)) {
+      out.writeObject(value);
+    }
+    ByteSink sink = new ByteSink();
+    sink.writeByte(Tags.JAVA);
+    sink.writeVarUInt(bytes.size());
+    sink.writeBytes(bytes.toByteArray(), 0, bytes.size());
+    return sink.toByteArray();
+  }
+
+  private Object assertDecodes(String hex) {
+    try {
+      return codec.decode(HexFormat.of().parseHex(hex), loader());
+    } catch (TRADESerializationException e) {
+      throw new AssertionError(hex, e);
+    }
+  }
+
+  private Object decode(Object value) {
+    try {
+      return codec.decode(codec.encode(value), loader());
+    } catch (TRADESerializationException e) {
+      throw new AssertionError(e);
+    }
+  }
+
   @Test
   void malformedPrimitivesAreRejected() {
     String[] hex = {
