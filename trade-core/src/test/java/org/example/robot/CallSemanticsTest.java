@@ -98,6 +98,9 @@ class CallSemanticsTest {
     assertEquals(12L, service("move").call(long.class, (short) 3, 4));
     assertEquals(3.0, service("scale").call(double.class, 1.5f));
     assertEquals(4.0, service("scale").call(double.class, 2));
+    // char widens to int, long, float and double, as in Java (it was refused for int).
+    assertEquals(97L * 98L, service("move").call(long.class, 'a', 'b'));
+    assertEquals(97.0 * 2, service("scale").call(double.class, 'a'));
     assertThrows(TRADEBadArgumentsException.class, () -> service("move").call(long.class, 3L, 4L));
   }
 

@@ -117,9 +117,12 @@ public final class Arguments {
     return null;
   }
 
-  /** byte 1, short 2, char/int 3. */
+  /**
+   * byte 1, short and char 2, int 3: a value widens to an integral type of a higher rank (char to
+   * short is refused above, as Java refuses it).
+   */
   private static int rank(Object v) {
-    return v instanceof Byte ? 1 : v instanceof Short ? 2 : 3;
+    return v instanceof Byte ? 1 : v instanceof Short || v instanceof Character ? 2 : 3;
   }
 
   private static TRADEBadArgumentsException bad(ServiceDescriptor d, int i, String problem) {
