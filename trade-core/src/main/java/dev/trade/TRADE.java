@@ -128,4 +128,39 @@ public final class TRADE {
       Class<? extends Annotation> annotation, TRADEServiceConstraints constraints) {
     return getDefaultContainer().getAvailableServices(annotation, constraints);
   }
+
+  /**
+   * A typed proxy on the default container: see {@link TRADEContainer#proxy(Class)}.
+   *
+   * <pre>{@code
+   * interface Arm {
+   *   boolean openGripper(int speed) throws TRADEException;
+   * }
+   * boolean opened = TRADE.proxy(Arm.class).openGripper(3);
+   * }</pre>
+   *
+   * @param <T> the interface
+   * @param type the interface to implement
+   * @return the proxy, safe for concurrent use
+   * @throws IllegalArgumentException if {@code type} is not an interface or one of its methods
+   *     cannot stand for a service (the message names the method and the fix)
+   */
+  public static <T> T proxy(Class<T> type) {
+    return getDefaultContainer().proxy(type);
+  }
+
+  /**
+   * A typed proxy on the default container whose services also match {@code constraints}: see
+   * {@link TRADEContainer#proxy(Class, TRADEServiceConstraints)}.
+   *
+   * @param <T> the interface
+   * @param type the interface to implement
+   * @param constraints what every method's service must also match; null for none
+   * @return the proxy, safe for concurrent use
+   * @throws IllegalArgumentException if {@code type} is not an interface or one of its methods
+   *     cannot stand for a service (the message names the method and the fix)
+   */
+  public static <T> T proxy(Class<T> type, TRADEServiceConstraints constraints) {
+    return getDefaultContainer().proxy(type, constraints);
+  }
 }

@@ -4,6 +4,7 @@ import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.config.Settings;
 import dev.trade.internal.container.ContainerCore;
 import dev.trade.internal.notify.Notifications;
+import dev.trade.internal.proxy.Proxies;
 import dev.trade.internal.registry.Entry;
 import dev.trade.internal.registry.LocalService;
 import dev.trade.internal.registry.Query;
@@ -38,6 +39,7 @@ import java.util.Set;
 public final class TRADEContainer implements AutoCloseable {
   private final ContainerCore core;
   private final Notifications notifications;
+  private final Proxies proxies;
 
   private TRADEContainer(Settings settings) {
     this.core = new ContainerCore(settings, new InfoBinding() {
@@ -53,6 +55,19 @@ public final class TRADEContainer implements AutoCloseable {
     });
     this.notifications = new Notifications(core.registry(), TRADEServiceInfo.class, this::bind,
         core.name());
+    this.proxies = new Proxies(new Proxies.Services() {
+      @Override
+      public TRADEServiceInfo find(TRADEServiceConstraints constraints, String name,
+          Class<?>[] parameterTypes) throws TRADEException {
+        TRADEServiceConstraints base = constraints == null ? new TRADEServiceConstraints() : constraints;
+        return getAvailableService(base.narrowed(name, parameterTypes));
+      }
+
+      @Override
+      public Object generation() {
+        return core.registry().generation();
+      }
+    }, core.name());
   }
 
   /** A builder starting from the built-in defaults (no configuration file is read). */
@@ -275,8 +290,71 @@ public final class TRADEContainer implements AutoCloseable {
    */
   @Override
   public void close() {
+    proxies.close();
     notifications.close();
     core.close();
+  }
+
+  /**
+   * A typed proxy: an implementation of {@code type} whose methods call the services of this
+   * container's system with the same name and parameter types. See
+   * {@link #proxy(Class, TRADEServiceConstraints)}.
+   *
+   * <pre>{@code
+   * interface Arm {
+   *   boolean openGripper(int speed);
+   * }
+   * Arm arm = container.proxy(Arm.class);
+   * arm.openGripper(3);
+   * }</pre>
+   *
+   * @param <T> the interface
+   * @param type the interface to implement
+   * @return the proxy, safe for concurrent use
+   * @throws IllegalArgumentException if {@code type} is not an interface or one of its methods
+   *     cannot stand for a service (the message names the method and the fix)
+   */
+  public <T> T proxy(Class<T> type) {
+    return proxy(type, null);
+  }
+
+  /**
+   * A typed proxy whose methods call services that also match {@code constraints} (for example
+   * {@code inGroups("MyRobot")}).
+   *
+   * <p><b>Finding services.</b> Each abstract method {@code m(P1, P2)} calls the preferred service
+   * (as {@link #getAvailableService} prefers) named {@code m} whose parameters take {@code P1, P2},
+   * so overloads find their own services. The service is found on the method's first call and kept
+   * while this container knows it; when it is deregistered or its container leaves, the next call
+   * finds one again. Default methods run their own code; {@code equals}, {@code hashCode} and
+   * {@code toString} are the proxy's own (identity).
+   *
+   * <p><b>Asynchronous methods.</b> A method returning {@code CompletableFuture<V>} (or
+   * {@code CompletionStage<V>}) returns at once; the call runs on one of this container's proxy
+   * threads (at most 16 at a time, the rest queue), and the future completes with the result or
+   * fails with what the method would have thrown. The call holds its thread until the reply
+   * arrives.
+   *
+   * <p><b>Failures.</b> A method that declares the exception the service threw (its own type, such
+   * as {@code GripperJammedException}) throws that exception itself. Otherwise a method that
+   * declares {@link TRADEException} throws it as {@link TRADEServiceInfo#call} would (for example
+   * {@link TRADEServiceNotFoundException} when nothing matches); a method that does not gets an
+   * {@link UncheckedTRADEException} whose cause is that {@code TRADEException}.
+   *
+   * <p>The interface is checked now, not on the first call; its parsed methods are cached for the
+   * life of the class.
+   *
+   * @param <T> the interface
+   * @param type the interface to implement
+   * @param constraints what every method's service must also match; null for none; copied now
+   * @return the proxy, safe for concurrent use
+   * @throws IllegalArgumentException if {@code type} is not an interface or one of its methods
+   *     cannot stand for a service (the message names the method and the fix)
+   * @throws IllegalStateException if this container is closed
+   */
+  public <T> T proxy(Class<T> type, TRADEServiceConstraints constraints) {
+    checkOpen();
+    return proxies.create(type, constraints == null ? null : constraints.copy());
   }
 
   /** A service info for {@code d} whose calls go through this container. */

@@ -162,7 +162,24 @@ public final class TRADEServiceConstraints {
         neg);
   }
 
-  private TRADEServiceConstraints copy() {
+  /**
+   * These constraints and, in every alternative, a service named {@code serviceName} whose
+   * parameters take {@code parameterTypes}: the lookup of a proxy's method. A new object.
+   */
+  TRADEServiceConstraints narrowed(String serviceName, Class<?>[] parameterTypes) {
+    if (alternatives.isEmpty() && name == null && argTypes == null) {
+      TRADEServiceConstraints c = copy();
+      c.name = serviceName;
+      c.argTypes = parameterTypes.clone();
+      return c;
+    }
+    // "A and B" as "A and not (not B)": negations are the one conjunction the model has across
+    // objects, and this keeps the name required, so the lookup scans that name only.
+    return new TRADEServiceConstraints().name(serviceName).argTypes(parameterTypes)
+        .not(new TRADEServiceConstraints().not(this));
+  }
+
+  TRADEServiceConstraints copy() {
     TRADEServiceConstraints c = new TRADEServiceConstraints();
     c.name = name;
     c.argTypes = argTypes;
