@@ -2,12 +2,14 @@ package dev.trade;
 
 import java.lang.annotation.Annotation;
 import java.util.Collection;
+import java.util.Objects;
 
 /**
  * The JVM's default {@link TRADEContainer}, as static methods: the API TRADE users write against.
  *
  * <p>The default container is created on first use, from the configuration found by
- * {@link TRADEContainer.Builder#loadConfiguration()}, and lives as long as the JVM: it is not
+ * {@link TRADEContainer.Builder#loadConfiguration()} (or, when the program set one first, from the
+ * container or builder given to {@code setDefaultContainer}), and lives as long as the JVM: it is not
  * closed at exit, so that components' own shutdown hooks can still deregister through it (hooks
  * run at the same time, and one that closed it would make theirs fail); its links end with the
  * process, which its peers notice at once. Every method is safe to call from any thread.
@@ -24,6 +26,8 @@ import java.util.Collection;
 public final class TRADE {
   private static final Object LOCK = new Object();
   private static volatile TRADEContainer defaultContainer;
+  // Guarded by LOCK: what setDefaultContainer(Builder) asked for, until the first use builds it.
+  private static TRADEContainer.Builder configured;
 
   private TRADE() {}
 
@@ -39,12 +43,67 @@ public final class TRADE {
       synchronized (LOCK) {
         c = defaultContainer;
         if (c == null) {
-          c = TRADEContainer.builder().loadConfiguration().build();
+          c = configured != null ? configured.build()
+              : TRADEContainer.builder().loadConfiguration().build();
+          configured = null;
           defaultContainer = c;
         }
       }
     }
     return c;
+  }
+
+  /**
+   * Makes {@code container} the default container, configured in code rather than by a file, a
+   * system property or the environment. Call it before any other method of this class, first
+   * thing in {@code main}:
+   *
+   * <pre>{@code
+   * TRADE.setDefaultContainer(TRADEContainer.builder().name("arm")
+   *     .property("CONNECTCONTAINERS", "10.0.0.2@10000").build());
+   * }</pre>
+   *
+   * @param container the container the static methods use from now on; not null
+   * @throws IllegalStateException if the default container exists already (the message says how
+   *     to fix it)
+   */
+  public static void setDefaultContainer(TRADEContainer container) {
+    Objects.requireNonNull(container, "container == null");
+    synchronized (LOCK) {
+      checkNotMade();
+      defaultContainer = container;
+    }
+  }
+
+  /**
+   * Has the default container built from {@code builder} (its settings as they are now) at the
+   * first use of this class, instead of from the configuration files; see
+   * {@link #setDefaultContainer(TRADEContainer)}. A later call before the first use replaces an
+   * earlier one.
+   *
+   * <pre>{@code
+   * TRADE.setDefaultContainer(TRADEContainer.builder().loadConfiguration().name("arm"));
+   * }</pre>
+   *
+   * @param builder the settings of the default container; not null; later changes to it do not
+   *     count
+   * @throws IllegalStateException if the default container exists already (the message says how
+   *     to fix it)
+   */
+  public static void setDefaultContainer(TRADEContainer.Builder builder) {
+    Objects.requireNonNull(builder, "builder == null");
+    synchronized (LOCK) {
+      checkNotMade();
+      configured = builder.copy();
+    }
+  }
+
+  private static void checkNotMade() {
+    if (defaultContainer != null) {
+      throw new IllegalStateException("the default container exists already (container "
+          + defaultContainer.getName() + ", made by an earlier TRADE call or setDefaultContainer);"
+          + " call TRADE.setDefaultContainer once, before any other TRADE method");
+    }
   }
 
   static TRADEContainer defaultContainer() {

@@ -9,6 +9,7 @@ import dev.trade.internal.registry.Entry;
 import dev.trade.internal.registry.LocalService;
 import dev.trade.internal.registry.Query;
 import dev.trade.internal.registry.ServiceDescriptor;
+import dev.trade.internal.registry.Suggestions;
 import java.lang.annotation.Annotation;
 import java.net.InetSocketAddress;
 import java.util.ArrayList;
@@ -143,7 +144,9 @@ public final class TRADEContainer implements AutoCloseable {
    * registered), then the nearest container's, then by container id and registration order.
    *
    * @param constraints null matches every service
-   * @throws TRADEServiceNotFoundException if none matches; the message names the constraints
+   * @throws TRADEServiceNotFoundException if none matches; the message names the constraints and,
+   *     when they name a service, the known services of that name or of the nearest names, with
+   *     their signatures
    */
   public TRADEServiceInfo getAvailableService(TRADEServiceConstraints constraints)
       throws TRADEException {
@@ -151,7 +154,8 @@ public final class TRADEContainer implements AutoCloseable {
     TRADEServiceConstraints c = constraints == null ? new TRADEServiceConstraints() : constraints;
     Entry e = core.registry().findFirst(c.requiredName(), c.toQuery());
     if (e == null) {
-      throw new TRADEServiceNotFoundException("No service matches " + c);
+      throw new TRADEServiceNotFoundException("No service matches " + c
+          + Suggestions.hint(core.registry().all(), c.requiredName()));
     }
     return bind(e.descriptor());
   }
@@ -408,6 +412,13 @@ public final class TRADEContainer implements AutoCloseable {
     private Settings settings = Settings.defaults();
 
     private Builder() {}
+
+    /** A builder with these settings, unaffected by later changes to this one. */
+    Builder copy() {
+      Builder b = new Builder();
+      b.settings = settings;
+      return b;
+    }
 
     /**
      * Starts over from the configuration TRADE would load for the default container: the file named
