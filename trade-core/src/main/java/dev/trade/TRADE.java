@@ -34,6 +34,7 @@ public final class TRADE {
   /**
    * The default container, created now if this is the first use.
    *
+   * @return the JVM's default container
    * @throws IllegalArgumentException if the configuration is invalid (the message names the key);
    *     the next call tries again
    */
@@ -110,79 +111,182 @@ public final class TRADE {
     return getDefaultContainer();
   }
 
-  /** See {@link TRADEContainer#registerAllServices(Object, Collection)}. */
+  /**
+   * Registers every service of {@code provider} in the default container: see
+   * {@link TRADEContainer#registerAllServices(Object, Collection)}.
+   *
+   * @param provider the object whose methods become services; not null
+   * @param groups the groups of its services; null for none
+   * @return the registered services (empty when the object has no service methods)
+   * @throws TRADEException as {@link TRADEContainer#registerAllServices(Object, Collection)}
+   */
   public static Collection<TRADEServiceInfo> registerAllServices(Object provider, Collection<String> groups)
       throws TRADEException {
     return getDefaultContainer().registerAllServices(provider, groups);
   }
 
-  /** See {@link TRADEContainer#registerAllServices(Object, String...)}. */
+  /**
+   * Registers every service of {@code provider} in the default container:
+   * {@code TRADE.registerAllServices(new RobotArm(), "MyRobot")}. See
+   * {@link TRADEContainer#registerAllServices(Object, String...)}.
+   *
+   * @param provider the object whose methods become services; not null
+   * @param groups the groups of its services
+   * @return the registered services (empty when the object has no service methods)
+   * @throws TRADEException as {@link TRADEContainer#registerAllServices(Object, Collection)}
+   */
   public static Collection<TRADEServiceInfo> registerAllServices(Object provider, String... groups)
       throws TRADEException {
     return getDefaultContainer().registerAllServices(provider, groups);
   }
 
-  /** See {@link TRADEContainer#register(Object, String)}. */
+  /**
+   * The TRADE paper's name for registering with one group: see
+   * {@link TRADEContainer#register(Object, String)}.
+   *
+   * @param provider the object whose methods become services; not null
+   * @param group the group of its services; null for none
+   * @return the registered services (empty when the object has no service methods)
+   * @throws TRADEException as {@link TRADEContainer#registerAllServices(Object, Collection)}
+   */
   public static Collection<TRADEServiceInfo> register(Object provider, String group) throws TRADEException {
     return getDefaultContainer().register(provider, group);
   }
 
-  /** See {@link TRADEContainer#register(Object, Collection)}. */
+  /**
+   * The TRADE paper's name for {@link #registerAllServices(Object, Collection)}: see
+   * {@link TRADEContainer#register(Object, Collection)}.
+   *
+   * @param provider the object whose methods become services; not null
+   * @param groups the groups of its services; null for none
+   * @return the registered services (empty when the object has no service methods)
+   * @throws TRADEException as {@link TRADEContainer#registerAllServices(Object, Collection)}
+   */
   public static Collection<TRADEServiceInfo> register(Object provider, Collection<String> groups)
       throws TRADEException {
     return getDefaultContainer().register(provider, groups);
   }
 
-  /** See {@link TRADEContainer#deregister(Object)}. */
+  /**
+   * Removes every service of {@code provider} from the default container: see
+   * {@link TRADEContainer#deregister(Object)}.
+   *
+   * @param provider an object registered in the default container
+   * @throws TRADEException {@link TRADEServiceNotFoundException} if it is not registered there
+   */
   public static void deregister(Object provider) throws TRADEException {
     getDefaultContainer().deregister(provider);
   }
 
-  /** See {@link TRADEContainer#getAvailableService(TRADEServiceConstraints)}. */
+  /**
+   * The preferred service matching {@code constraints}: see
+   * {@link TRADEContainer#getAvailableService(TRADEServiceConstraints)}.
+   *
+   * <pre>{@code
+   * boolean opened = TRADE.getAvailableService(
+   *     new TRADEServiceConstraints().name("openGripper").argTypes(int.class)).call(boolean.class, 3);
+   * }</pre>
+   *
+   * @param constraints the constraints; null matches every service
+   * @return the preferred matching service
+   * @throws TRADEException {@link TRADEServiceNotFoundException} if none matches (the message
+   *     names the constraints and the nearest services)
+   */
   public static TRADEServiceInfo getAvailableService(TRADEServiceConstraints constraints)
       throws TRADEException {
     return getDefaultContainer().getAvailableService(constraints);
   }
 
-  /** See {@link TRADEContainer#getAvailableServices()}. */
+  /**
+   * Every service of the system: see {@link TRADEContainer#getAvailableServices()}.
+   *
+   * @return the services, in preference order; maybe none
+   */
   public static Collection<TRADEServiceInfo> getAvailableServices() {
     return getDefaultContainer().getAvailableServices();
   }
 
-  /** See {@link TRADEContainer#getAvailableServices(TRADEServiceConstraints)}. */
+  /**
+   * Every service matching {@code constraints}: see
+   * {@link TRADEContainer#getAvailableServices(TRADEServiceConstraints)}.
+   *
+   * @param constraints the constraints; null matches every service
+   * @return the matches, in preference order; maybe none
+   */
   public static Collection<TRADEServiceInfo> getAvailableServices(TRADEServiceConstraints constraints) {
     return getDefaultContainer().getAvailableServices(constraints);
   }
 
-  /** See {@link TRADEContainer#requestNotification}. */
+  /**
+   * Asks for a callback when matching services join or leave: see
+   * {@link TRADEContainer#requestNotification}.
+   *
+   * @param listener the object with the callback method; not null
+   * @param type {@code "joined"} or {@code "left"}
+   * @param constraints the services of interest (null: all)
+   * @param argument reserved; ignored by joined and left
+   * @param callbackMethod the name of the callback method
+   * @throws TRADEException {@link TRADEBadArgumentsException} for an unknown type or no usable
+   *     callback method
+   */
   public static void requestNotification(Object listener, String type,
       TRADEServiceConstraints constraints, Object argument, String callbackMethod) throws TRADEException {
     getDefaultContainer().requestNotification(listener, type, constraints, argument, callbackMethod);
   }
 
-  /** See {@link TRADEContainer#cancelNotification}. */
+  /**
+   * Cancels notifications: see {@link TRADEContainer#cancelNotification}.
+   *
+   * @param listener the listener of the requests
+   * @param type {@code "joined"} or {@code "left"}
+   * @param constraints the requests' constraints; null for all of that type
+   * @throws TRADEException if {@code type} is unknown
+   */
   public static void cancelNotification(Object listener, String type,
       TRADEServiceConstraints constraints) throws TRADEException {
     getDefaultContainer().cancelNotification(listener, type, constraints);
   }
 
-  /** See {@link TRADEContainer#registerNotificationNowOrWhenJoined}. */
+  /**
+   * Calls back now for every matching service and later for every one that joins: see
+   * {@link TRADEContainer#registerNotificationNowOrWhenJoined}.
+   *
+   * @param listener the object with the callback method; not null
+   * @param constraints the services of interest (null: all)
+   * @param callbackMethod the name of the callback method
+   * @throws TRADEException as {@link #requestNotification}
+   */
   public static void registerNotificationNowOrWhenJoined(Object listener,
       TRADEServiceConstraints constraints, String callbackMethod) throws TRADEException {
     getDefaultContainer().registerNotificationNowOrWhenJoined(listener, constraints, callbackMethod);
   }
 
-  /** See {@link TRADEContainer#setDiscovery(boolean)}. */
+  /**
+   * Switches discovery on or off: see {@link TRADEContainer#setDiscovery(boolean)}.
+   *
+   * @param on whether to discover
+   */
   public static void setDiscovery(boolean on) {
     getDefaultContainer().setDiscovery(on);
   }
 
-  /** See {@link TRADEContainer#setBroadcast(boolean)}. */
+  /**
+   * Switches announcing on or off: see {@link TRADEContainer#setBroadcast(boolean)}.
+   *
+   * @param on whether to announce
+   */
   public static void setBroadcast(boolean on) {
     getDefaultContainer().setBroadcast(on);
   }
 
-  /** See {@link TRADEContainer#getAvailableServices(Class, TRADEServiceConstraints)}. */
+  /**
+   * Every service matching {@code constraints} whose method carries {@code annotation}: see
+   * {@link TRADEContainer#getAvailableServices(Class, TRADEServiceConstraints)}.
+   *
+   * @param annotation the annotation type; not null
+   * @param constraints the constraints; null matches every service
+   * @return the matches, in preference order; maybe none
+   */
   public static Collection<TRADEServiceInfo> getAvailableServices(
       Class<? extends Annotation> annotation, TRADEServiceConstraints constraints) {
     return getDefaultContainer().getAvailableServices(annotation, constraints);

@@ -12,7 +12,9 @@ package dev.trade;
 public class TRADERemoteException extends TRADEException {
   private static final long serialVersionUID = 1L;
 
+  /** The remote exception's class name. */
   private final String remoteTypeName;
+  /** The remote exception's message, or null. */
   private final String remoteMessage;
 
   /**
