@@ -2,12 +2,14 @@ package dev.trade;
 
 import java.lang.annotation.Annotation;
 import java.util.Collection;
+import java.util.Objects;
 
 /**
  * The JVM's default {@link TRADEContainer}, as static methods: the API TRADE users write against.
  *
  * <p>The default container is created on first use, from the configuration found by
- * {@link TRADEContainer.Builder#loadConfiguration()}, and lives as long as the JVM: it is not
+ * {@link TRADEContainer.Builder#loadConfiguration()} (or, when the program set one first, from the
+ * container or builder given to {@code setDefaultContainer}), and lives as long as the JVM: it is not
  * closed at exit, so that components' own shutdown hooks can still deregister through it (hooks
  * run at the same time, and one that closed it would make theirs fail); its links end with the
  * process, which its peers notice at once. Every method is safe to call from any thread.
@@ -24,12 +26,15 @@ import java.util.Collection;
 public final class TRADE {
   private static final Object LOCK = new Object();
   private static volatile TRADEContainer defaultContainer;
+  // Guarded by LOCK: what setDefaultContainer(Builder) asked for, until the first use builds it.
+  private static TRADEContainer.Builder configured;
 
   private TRADE() {}
 
   /**
    * The default container, created now if this is the first use.
    *
+   * @return the JVM's default container
    * @throws IllegalArgumentException if the configuration is invalid (the message names the key);
    *     the next call tries again
    */
@@ -39,7 +44,9 @@ public final class TRADE {
       synchronized (LOCK) {
         c = defaultContainer;
         if (c == null) {
-          c = TRADEContainer.builder().loadConfiguration().build();
+          c = configured != null ? configured.build()
+              : TRADEContainer.builder().loadConfiguration().build();
+          configured = null;
           defaultContainer = c;
         }
       }
@@ -47,85 +54,276 @@ public final class TRADE {
     return c;
   }
 
+  /**
+   * Makes {@code container} the default container, configured in code rather than by a file, a
+   * system property or the environment. Call it before any other method of this class, first
+   * thing in {@code main}:
+   *
+   * <pre>{@code
+   * TRADE.setDefaultContainer(TRADEContainer.builder().name("arm")
+   *     .property("CONNECTCONTAINERS", "10.0.0.2@10000").build());
+   * }</pre>
+   *
+   * @param container the container the static methods use from now on; not null
+   * @throws IllegalStateException if the default container exists already (the message says how
+   *     to fix it)
+   */
+  public static void setDefaultContainer(TRADEContainer container) {
+    Objects.requireNonNull(container, "container == null");
+    synchronized (LOCK) {
+      checkNotMade();
+      defaultContainer = container;
+    }
+  }
+
+  /**
+   * Has the default container built from {@code builder} (its settings as they are now) at the
+   * first use of this class, instead of from the configuration files; see
+   * {@link #setDefaultContainer(TRADEContainer)}. A later call before the first use replaces an
+   * earlier one.
+   *
+   * <pre>{@code
+   * TRADE.setDefaultContainer(TRADEContainer.builder().loadConfiguration().name("arm"));
+   * }</pre>
+   *
+   * @param builder the settings of the default container; not null; later changes to it do not
+   *     count
+   * @throws IllegalStateException if the default container exists already (the message says how
+   *     to fix it)
+   */
+  public static void setDefaultContainer(TRADEContainer.Builder builder) {
+    Objects.requireNonNull(builder, "builder == null");
+    synchronized (LOCK) {
+      checkNotMade();
+      configured = builder.copy();
+    }
+  }
+
+  private static void checkNotMade() {
+    if (defaultContainer != null) {
+      throw new IllegalStateException("the default container exists already (container "
+          + defaultContainer.getName() + ", made by an earlier TRADE call or setDefaultContainer);"
+          + " call TRADE.setDefaultContainer once, before any other TRADE method");
+    }
+  }
+
   static TRADEContainer defaultContainer() {
     return getDefaultContainer();
   }
 
-  /** See {@link TRADEContainer#registerAllServices(Object, Collection)}. */
+  /**
+   * Registers every service of {@code provider} in the default container: see
+   * {@link TRADEContainer#registerAllServices(Object, Collection)}.
+   *
+   * @param provider the object whose methods become services; not null
+   * @param groups the groups of its services; null for none
+   * @return the registered services (empty when the object has no service methods)
+   * @throws TRADEException as {@link TRADEContainer#registerAllServices(Object, Collection)}
+   */
   public static Collection<TRADEServiceInfo> registerAllServices(Object provider, Collection<String> groups)
       throws TRADEException {
     return getDefaultContainer().registerAllServices(provider, groups);
   }
 
-  /** See {@link TRADEContainer#registerAllServices(Object, String...)}. */
+  /**
+   * Registers every service of {@code provider} in the default container:
+   * {@code TRADE.registerAllServices(new RobotArm(), "MyRobot")}. See
+   * {@link TRADEContainer#registerAllServices(Object, String...)}.
+   *
+   * @param provider the object whose methods become services; not null
+   * @param groups the groups of its services
+   * @return the registered services (empty when the object has no service methods)
+   * @throws TRADEException as {@link TRADEContainer#registerAllServices(Object, Collection)}
+   */
   public static Collection<TRADEServiceInfo> registerAllServices(Object provider, String... groups)
       throws TRADEException {
     return getDefaultContainer().registerAllServices(provider, groups);
   }
 
-  /** See {@link TRADEContainer#register(Object, String)}. */
+  /**
+   * The TRADE paper's name for registering with one group: see
+   * {@link TRADEContainer#register(Object, String)}.
+   *
+   * @param provider the object whose methods become services; not null
+   * @param group the group of its services; null for none
+   * @return the registered services (empty when the object has no service methods)
+   * @throws TRADEException as {@link TRADEContainer#registerAllServices(Object, Collection)}
+   */
   public static Collection<TRADEServiceInfo> register(Object provider, String group) throws TRADEException {
     return getDefaultContainer().register(provider, group);
   }
 
-  /** See {@link TRADEContainer#register(Object, Collection)}. */
+  /**
+   * The TRADE paper's name for {@link #registerAllServices(Object, Collection)}: see
+   * {@link TRADEContainer#register(Object, Collection)}.
+   *
+   * @param provider the object whose methods become services; not null
+   * @param groups the groups of its services; null for none
+   * @return the registered services (empty when the object has no service methods)
+   * @throws TRADEException as {@link TRADEContainer#registerAllServices(Object, Collection)}
+   */
   public static Collection<TRADEServiceInfo> register(Object provider, Collection<String> groups)
       throws TRADEException {
     return getDefaultContainer().register(provider, groups);
   }
 
-  /** See {@link TRADEContainer#deregister(Object)}. */
+  /**
+   * Removes every service of {@code provider} from the default container: see
+   * {@link TRADEContainer#deregister(Object)}.
+   *
+   * @param provider an object registered in the default container
+   * @throws TRADEException {@link TRADEServiceNotFoundException} if it is not registered there
+   */
   public static void deregister(Object provider) throws TRADEException {
     getDefaultContainer().deregister(provider);
   }
 
-  /** See {@link TRADEContainer#getAvailableService(TRADEServiceConstraints)}. */
+  /**
+   * The preferred service matching {@code constraints}: see
+   * {@link TRADEContainer#getAvailableService(TRADEServiceConstraints)}.
+   *
+   * <pre>{@code
+   * boolean opened = TRADE.getAvailableService(
+   *     new TRADEServiceConstraints().name("openGripper").argTypes(int.class)).call(boolean.class, 3);
+   * }</pre>
+   *
+   * @param constraints the constraints; null matches every service
+   * @return the preferred matching service
+   * @throws TRADEException {@link TRADEServiceNotFoundException} if none matches (the message
+   *     names the constraints and the nearest services)
+   */
   public static TRADEServiceInfo getAvailableService(TRADEServiceConstraints constraints)
       throws TRADEException {
     return getDefaultContainer().getAvailableService(constraints);
   }
 
-  /** See {@link TRADEContainer#getAvailableServices()}. */
+  /**
+   * Every service of the system: see {@link TRADEContainer#getAvailableServices()}.
+   *
+   * @return the services, in preference order; maybe none
+   */
   public static Collection<TRADEServiceInfo> getAvailableServices() {
     return getDefaultContainer().getAvailableServices();
   }
 
-  /** See {@link TRADEContainer#getAvailableServices(TRADEServiceConstraints)}. */
+  /**
+   * Every service matching {@code constraints}: see
+   * {@link TRADEContainer#getAvailableServices(TRADEServiceConstraints)}.
+   *
+   * @param constraints the constraints; null matches every service
+   * @return the matches, in preference order; maybe none
+   */
   public static Collection<TRADEServiceInfo> getAvailableServices(TRADEServiceConstraints constraints) {
     return getDefaultContainer().getAvailableServices(constraints);
   }
 
-  /** See {@link TRADEContainer#requestNotification}. */
+  /**
+   * Asks for a callback when matching services join or leave: see
+   * {@link TRADEContainer#requestNotification}.
+   *
+   * @param listener the object with the callback method; not null
+   * @param type {@code "joined"} or {@code "left"}
+   * @param constraints the services of interest (null: all)
+   * @param argument reserved; ignored by joined and left
+   * @param callbackMethod the name of the callback method
+   * @throws TRADEException {@link TRADEBadArgumentsException} for an unknown type or no usable
+   *     callback method
+   */
   public static void requestNotification(Object listener, String type,
       TRADEServiceConstraints constraints, Object argument, String callbackMethod) throws TRADEException {
     getDefaultContainer().requestNotification(listener, type, constraints, argument, callbackMethod);
   }
 
-  /** See {@link TRADEContainer#cancelNotification}. */
+  /**
+   * Cancels notifications: see {@link TRADEContainer#cancelNotification}.
+   *
+   * @param listener the listener of the requests
+   * @param type {@code "joined"} or {@code "left"}
+   * @param constraints the requests' constraints; null for all of that type
+   * @throws TRADEException if {@code type} is unknown
+   */
   public static void cancelNotification(Object listener, String type,
       TRADEServiceConstraints constraints) throws TRADEException {
     getDefaultContainer().cancelNotification(listener, type, constraints);
   }
 
-  /** See {@link TRADEContainer#registerNotificationNowOrWhenJoined}. */
+  /**
+   * Calls back now for every matching service and later for every one that joins: see
+   * {@link TRADEContainer#registerNotificationNowOrWhenJoined}.
+   *
+   * @param listener the object with the callback method; not null
+   * @param constraints the services of interest (null: all)
+   * @param callbackMethod the name of the callback method
+   * @throws TRADEException as {@link #requestNotification}
+   */
   public static void registerNotificationNowOrWhenJoined(Object listener,
       TRADEServiceConstraints constraints, String callbackMethod) throws TRADEException {
     getDefaultContainer().registerNotificationNowOrWhenJoined(listener, constraints, callbackMethod);
   }
 
-  /** See {@link TRADEContainer#setDiscovery(boolean)}. */
+  /**
+   * Switches discovery on or off: see {@link TRADEContainer#setDiscovery(boolean)}.
+   *
+   * @param on whether to discover
+   */
   public static void setDiscovery(boolean on) {
     getDefaultContainer().setDiscovery(on);
   }
 
-  /** See {@link TRADEContainer#setBroadcast(boolean)}. */
+  /**
+   * Switches announcing on or off: see {@link TRADEContainer#setBroadcast(boolean)}.
+   *
+   * @param on whether to announce
+   */
   public static void setBroadcast(boolean on) {
     getDefaultContainer().setBroadcast(on);
   }
 
-  /** See {@link TRADEContainer#getAvailableServices(Class, TRADEServiceConstraints)}. */
+  /**
+   * Every service matching {@code constraints} whose method carries {@code annotation}: see
+   * {@link TRADEContainer#getAvailableServices(Class, TRADEServiceConstraints)}.
+   *
+   * @param annotation the annotation type; not null
+   * @param constraints the constraints; null matches every service
+   * @return the matches, in preference order; maybe none
+   */
   public static Collection<TRADEServiceInfo> getAvailableServices(
       Class<? extends Annotation> annotation, TRADEServiceConstraints constraints) {
     return getDefaultContainer().getAvailableServices(annotation, constraints);
+  }
+
+  /**
+   * A typed proxy on the default container: see {@link TRADEContainer#proxy(Class)}.
+   *
+   * <pre>{@code
+   * interface Arm {
+   *   boolean openGripper(int speed) throws TRADEException;
+   * }
+   * boolean opened = TRADE.proxy(Arm.class).openGripper(3);
+   * }</pre>
+   *
+   * @param <T> the interface
+   * @param type the interface to implement
+   * @return the proxy, safe for concurrent use
+   * @throws IllegalArgumentException if {@code type} is not an interface or one of its methods
+   *     cannot stand for a service (the message names the method and the fix)
+   */
+  public static <T> T proxy(Class<T> type) {
+    return getDefaultContainer().proxy(type);
+  }
+
+  /**
+   * A typed proxy on the default container whose services also match {@code constraints}: see
+   * {@link TRADEContainer#proxy(Class, TRADEServiceConstraints)}.
+   *
+   * @param <T> the interface
+   * @param type the interface to implement
+   * @param constraints what every method's service must also match; null for none
+   * @return the proxy, safe for concurrent use
+   * @throws IllegalArgumentException if {@code type} is not an interface or one of its methods
+   *     cannot stand for a service (the message names the method and the fix)
+   */
+  public static <T> T proxy(Class<T> type, TRADEServiceConstraints constraints) {
+    return getDefaultContainer().proxy(type, constraints);
   }
 }

@@ -7,10 +7,21 @@ package dev.trade;
 public class TRADEBadArgumentsException extends TRADEException {
   private static final long serialVersionUID = 1L;
 
+  /**
+   * An exception with a message.
+   *
+   * @param message what went wrong and, where known, how to fix it
+   */
   public TRADEBadArgumentsException(String message) {
     super(message);
   }
 
+  /**
+   * An exception with a message and a cause.
+   *
+   * @param message what went wrong and, where known, how to fix it
+   * @param cause the failure behind this one, or null
+   */
   public TRADEBadArgumentsException(String message, Throwable cause) {
     super(message, cause);
   }

@@ -4,10 +4,12 @@ import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.config.Settings;
 import dev.trade.internal.container.ContainerCore;
 import dev.trade.internal.notify.Notifications;
+import dev.trade.internal.proxy.Proxies;
 import dev.trade.internal.registry.Entry;
 import dev.trade.internal.registry.LocalService;
 import dev.trade.internal.registry.Query;
 import dev.trade.internal.registry.ServiceDescriptor;
+import dev.trade.internal.registry.Suggestions;
 import java.lang.annotation.Annotation;
 import java.net.InetSocketAddress;
 import java.util.ArrayList;
@@ -38,6 +40,7 @@ import java.util.Set;
 public final class TRADEContainer implements AutoCloseable {
   private final ContainerCore core;
   private final Notifications notifications;
+  private final Proxies proxies;
 
   private TRADEContainer(Settings settings) {
     this.core = new ContainerCore(settings, new InfoBinding() {
@@ -53,24 +56,53 @@ public final class TRADEContainer implements AutoCloseable {
     });
     this.notifications = new Notifications(core.registry(), TRADEServiceInfo.class, this::bind,
         core.name());
+    this.proxies = new Proxies(new Proxies.Services() {
+      @Override
+      public TRADEServiceInfo find(TRADEServiceConstraints constraints, String name,
+          Class<?>[] parameterTypes) throws TRADEException {
+        TRADEServiceConstraints base = constraints == null ? new TRADEServiceConstraints() : constraints;
+        return getAvailableService(base.narrowed(name, parameterTypes));
+      }
+
+      @Override
+      public Object generation() {
+        return core.registry().generation();
+      }
+    }, core.name());
   }
 
-  /** A builder starting from the built-in defaults (no configuration file is read). */
+  /**
+   * A builder starting from the built-in defaults (no configuration file is read).
+   *
+   * @return a new builder
+   */
   public static Builder builder() {
     return new Builder();
   }
 
-  /** This container's name (the {@code CONTAINERNAME} setting, or one derived from host and pid). */
+  /**
+   * This container's name.
+   *
+   * @return the {@code CONTAINERNAME} setting, or a name derived from host and pid
+   */
   public String getName() {
     return core.name();
   }
 
-  /** The id of this container's incarnation: unique, new at every start. */
+  /**
+   * The id of this container's incarnation.
+   *
+   * @return an id that is unique, new at every start
+   */
   public String getId() {
     return core.containerId();
   }
 
-  /** The host name this container reports for its services. */
+  /**
+   * The host name this container reports for its services.
+   *
+   * @return the host name
+   */
   public String getHost() {
     return core.host();
   }
@@ -79,6 +111,16 @@ public final class TRADEContainer implements AutoCloseable {
    * Registers every {@link TRADEService} method of {@code provider} as a service in
    * {@code groups}; null, empty or blank group names mean no group. All or nothing.
    *
+   * <pre>{@code
+   * Collection<TRADEServiceInfo> mine = container.registerAllServices(new RobotArm(), List.of("MyRobot"));
+   * }</pre>
+   *
+   * <p>An object without service methods registers nothing, and a WARNING names its class and
+   * the rule (a service is a public method annotated {@code @TRADEService}, on the class or on an
+   * interface it implements).
+   *
+   * @param provider the object whose methods become services; not null
+   * @param groups the groups of its services; null for none
    * @return the registered services (empty when the object has no service methods)
    * @throws TRADERegistrationException if {@code provider} is already registered, or one of its
    *     annotated methods cannot be a service (the message names the method and the fix)
@@ -95,18 +137,39 @@ public final class TRADEContainer implements AutoCloseable {
     return infos;
   }
 
-  /** As {@link #registerAllServices(Object, Collection)}; {@code (String) null} means no group. */
+  /**
+   * As {@link #registerAllServices(Object, Collection)}; {@code (String) null} means no group.
+   *
+   * @param provider the object whose methods become services; not null
+   * @param groups the groups of its services
+   * @return the registered services (empty when the object has no service methods)
+   * @throws TRADEException as {@link #registerAllServices(Object, Collection)}
+   */
   public Collection<TRADEServiceInfo> registerAllServices(Object provider, String... groups)
       throws TRADEException {
     return registerAllServices(provider, groups == null ? List.of() : Arrays.asList(groups));
   }
 
-  /** The TRADE paper's name for {@link #registerAllServices(Object, String...)} with one group. */
+  /**
+   * The TRADE paper's name for {@link #registerAllServices(Object, String...)} with one group.
+   *
+   * @param provider the object whose methods become services; not null
+   * @param group the group of its services; null for none
+   * @return the registered services (empty when the object has no service methods)
+   * @throws TRADEException as {@link #registerAllServices(Object, Collection)}
+   */
   public Collection<TRADEServiceInfo> register(Object provider, String group) throws TRADEException {
     return registerAllServices(provider, group);
   }
 
-  /** The TRADE paper's name for {@link #registerAllServices(Object, Collection)}. */
+  /**
+   * The TRADE paper's name for {@link #registerAllServices(Object, Collection)}.
+   *
+   * @param provider the object whose methods become services; not null
+   * @param groups the groups of its services; null for none
+   * @return the registered services (empty when the object has no service methods)
+   * @throws TRADEException as {@link #registerAllServices(Object, Collection)}
+   */
   public Collection<TRADEServiceInfo> register(Object provider, Collection<String> groups)
       throws TRADEException {
     return registerAllServices(provider, groups);
@@ -116,6 +179,7 @@ public final class TRADEContainer implements AutoCloseable {
    * Removes every service of {@code provider}. Calls already running finish; later calls through
    * existing infos fail with {@link TRADEServiceUnavailableException}.
    *
+   * @param provider an object registered here
    * @throws TRADEServiceNotFoundException if {@code provider} is not registered here
    */
   public void deregister(Object provider) throws TRADEException {
@@ -127,8 +191,16 @@ public final class TRADEContainer implements AutoCloseable {
    * The preferred service matching {@code constraints}: one of this container first (the earliest
    * registered), then the nearest container's, then by container id and registration order.
    *
+   * <pre>{@code
+   * TRADEServiceInfo open = container.getAvailableService(
+   *     new TRADEServiceConstraints().name("openGripper").argTypes(int.class));
+   * }</pre>
+   *
+   * @return the preferred matching service
    * @param constraints null matches every service
-   * @throws TRADEServiceNotFoundException if none matches; the message names the constraints
+   * @throws TRADEServiceNotFoundException if none matches; the message names the constraints and,
+   *     when they name a service, the known services of that name or of the nearest names, with
+   *     their signatures
    */
   public TRADEServiceInfo getAvailableService(TRADEServiceConstraints constraints)
       throws TRADEException {
@@ -136,24 +208,40 @@ public final class TRADEContainer implements AutoCloseable {
     TRADEServiceConstraints c = constraints == null ? new TRADEServiceConstraints() : constraints;
     Entry e = core.registry().findFirst(c.requiredName(), c.toQuery());
     if (e == null) {
-      throw new TRADEServiceNotFoundException("No service matches " + c);
+      throw new TRADEServiceNotFoundException("No service matches " + c
+          + Suggestions.hint(core.registry().all(), c.requiredName()));
     }
     return bind(e.descriptor());
   }
 
-  /** Every service of the system, in preference order. */
+  /**
+   * Every service of the system.
+   *
+   * @return the services, in preference order; maybe none
+   */
   public Collection<TRADEServiceInfo> getAvailableServices() {
     return getAvailableServices(null);
   }
 
-  /** Every service matching {@code constraints} (null: all), in preference order; maybe none. */
+  /**
+   * Every service matching {@code constraints}.
+   *
+   * @param constraints the constraints; null matches every service
+   * @return the matches, in preference order; maybe none
+   */
   public Collection<TRADEServiceInfo> getAvailableServices(TRADEServiceConstraints constraints) {
     checkOpen();
     TRADEServiceConstraints c = constraints == null ? new TRADEServiceConstraints() : constraints;
     return bindAll(core.registry().find(c.requiredName(), c.toQuery()), null);
   }
 
-  /** Every service matching {@code constraints} whose method carries {@code annotation}. */
+  /**
+   * Every service matching {@code constraints} whose method carries {@code annotation}.
+   *
+   * @param annotation the annotation type; not null
+   * @param constraints the constraints; null matches every service
+   * @return the matches, in preference order; maybe none
+   */
   public Collection<TRADEServiceInfo> getAvailableServices(
       Class<? extends Annotation> annotation, TRADEServiceConstraints constraints) {
     Objects.requireNonNull(annotation, "annotation == null");
@@ -164,7 +252,9 @@ public final class TRADEContainer implements AutoCloseable {
 
   /**
    * The addresses this container accepts connections on ({@code SERVERIPS}; with port 0 the port
-   * actually chosen), as {@code ip@port}. Empty when it does not accept connections.
+   * actually chosen).
+   *
+   * @return the addresses as {@code ip@port}; empty when it does not accept connections
    */
   public List<String> getServerAddresses() {
     List<String> result = new ArrayList<>();
@@ -186,7 +276,10 @@ public final class TRADEContainer implements AutoCloseable {
    * the changes happened; each event reaches each matching request once. A callback that throws is
    * logged and does not stop later deliveries.
    *
+   * @param listener the object with the callback method; not null
+   * @param type {@code "joined"} or {@code "left"}
    * @param constraints the services of interest (null: all)
+   * @param callbackMethod the name of the callback method
    * @param argument reserved for notification types that take one; ignored by joined and left
    * @throws TRADEBadArgumentsException an unknown type, or no usable callback method (the message
    *     names the class and method and what is wrong)
@@ -201,6 +294,11 @@ public final class TRADEContainer implements AutoCloseable {
    * Cancels the listener's notifications of {@code type} whose constraints equal
    * {@code constraints}, or all of that type when {@code constraints} is null. Events already
    * queued for a cancelled request are not delivered.
+   *
+   * @param listener the listener of the requests
+   * @param type {@code "joined"} or {@code "left"}
+   * @param constraints the requests' constraints; null for all of that type
+   * @throws TRADEException if {@code type} is unknown
    */
   public void cancelNotification(Object listener, String type, TRADEServiceConstraints constraints)
       throws TRADEException {
@@ -211,6 +309,11 @@ public final class TRADEContainer implements AutoCloseable {
    * Calls {@code listener.callbackMethod(TRADEServiceInfo)} now for every service already matching
    * {@code constraints}, and then for every one that joins: without a race between the two, so
    * each service is delivered exactly once.
+   *
+   * @param listener the object with the callback method; not null
+   * @param constraints the services of interest (null: all)
+   * @param callbackMethod the name of the callback method
+   * @throws TRADEException as {@link #requestNotification}
    */
   public void registerNotificationNowOrWhenJoined(Object listener,
       TRADEServiceConstraints constraints, String callbackMethod) throws TRADEException {
@@ -227,6 +330,7 @@ public final class TRADEContainer implements AutoCloseable {
    * announcements of containers of its system ({@code TRADESYSID}, {@code CREDENTIALS}) and connects
    * to them. See docs/discovery.md.
    *
+   * @param on whether to discover
    * @throws java.io.UncheckedIOException if discovery cannot open its socket
    */
   public void setDiscovery(boolean on) {
@@ -238,6 +342,7 @@ public final class TRADEContainer implements AutoCloseable {
    * Switches announcing this container by multicast on or off at run time; while on, it accepts
    * connections (on {@code SERVERIPS}, or where the discovery range reaches).
    *
+   * @param on whether to announce
    * @throws java.io.UncheckedIOException if a socket cannot be opened
    */
   public void setBroadcast(boolean on) {
@@ -245,12 +350,20 @@ public final class TRADEContainer implements AutoCloseable {
     core.setBroadcast(on);
   }
 
-  /** Whether discovery is on. */
+  /**
+   * Whether discovery is on.
+   *
+   * @return true while this container discovers others
+   */
   public boolean isDiscovering() {
     return core.isDiscovering();
   }
 
-  /** Whether this container announces itself. */
+  /**
+   * Whether this container announces itself.
+   *
+   * @return true while it announces
+   */
   public boolean isBroadcasting() {
     return core.isBroadcasting();
   }
@@ -258,6 +371,8 @@ public final class TRADEContainer implements AutoCloseable {
   /**
    * The ids of the containers this one has a direct, authenticated link to right now: an
    * unmodifiable snapshot.
+   *
+   * @return the neighbours' container ids
    */
   public List<String> getNeighbours() {
     return core.neighbours();
@@ -275,8 +390,71 @@ public final class TRADEContainer implements AutoCloseable {
    */
   @Override
   public void close() {
+    proxies.close();
     notifications.close();
     core.close();
+  }
+
+  /**
+   * A typed proxy: an implementation of {@code type} whose methods call the services of this
+   * container's system with the same name and parameter types. See
+   * {@link #proxy(Class, TRADEServiceConstraints)}.
+   *
+   * <pre>{@code
+   * interface Arm {
+   *   boolean openGripper(int speed);
+   * }
+   * Arm arm = container.proxy(Arm.class);
+   * arm.openGripper(3);
+   * }</pre>
+   *
+   * @param <T> the interface
+   * @param type the interface to implement
+   * @return the proxy, safe for concurrent use
+   * @throws IllegalArgumentException if {@code type} is not an interface or one of its methods
+   *     cannot stand for a service (the message names the method and the fix)
+   */
+  public <T> T proxy(Class<T> type) {
+    return proxy(type, null);
+  }
+
+  /**
+   * A typed proxy whose methods call services that also match {@code constraints} (for example
+   * {@code inGroups("MyRobot")}).
+   *
+   * <p><b>Finding services.</b> Each abstract method {@code m(P1, P2)} calls the preferred service
+   * (as {@link #getAvailableService} prefers) named {@code m} whose parameters take {@code P1, P2},
+   * so overloads find their own services. The service is found on the method's first call and kept
+   * while this container knows it; when it is deregistered or its container leaves, the next call
+   * finds one again. Default methods run their own code; {@code equals}, {@code hashCode} and
+   * {@code toString} are the proxy's own (identity).
+   *
+   * <p><b>Asynchronous methods.</b> A method returning {@code CompletableFuture<V>} (or
+   * {@code CompletionStage<V>}) returns at once; the call runs on one of this container's proxy
+   * threads (at most 16 at a time, the rest queue), and the future completes with the result or
+   * fails with what the method would have thrown. The call holds its thread until the reply
+   * arrives.
+   *
+   * <p><b>Failures.</b> A method that declares the exception the service threw (its own type, such
+   * as {@code GripperJammedException}) throws that exception itself. Otherwise a method that
+   * declares {@link TRADEException} throws it as {@link TRADEServiceInfo#call} would (for example
+   * {@link TRADEServiceNotFoundException} when nothing matches); a method that does not gets an
+   * {@link UncheckedTRADEException} whose cause is that {@code TRADEException}.
+   *
+   * <p>The interface is checked now, not on the first call; its parsed methods are cached for the
+   * life of the class.
+   *
+   * @param <T> the interface
+   * @param type the interface to implement
+   * @param constraints what every method's service must also match; null for none; copied now
+   * @return the proxy, safe for concurrent use
+   * @throws IllegalArgumentException if {@code type} is not an interface or one of its methods
+   *     cannot stand for a service (the message names the method and the fix)
+   * @throws IllegalStateException if this container is closed
+   */
+  public <T> T proxy(Class<T> type, TRADEServiceConstraints constraints) {
+    checkOpen();
+    return proxies.create(type, constraints == null ? null : constraints.copy());
   }
 
   /** A service info for {@code d} whose calls go through this container. */
@@ -331,12 +509,20 @@ public final class TRADEContainer implements AutoCloseable {
 
     private Builder() {}
 
+    /** A builder with these settings, unaffected by later changes to this one. */
+    Builder copy() {
+      Builder b = new Builder();
+      b.settings = settings;
+      return b;
+    }
+
     /**
      * Starts over from the configuration TRADE would load for the default container: the file named
      * by the system property {@code trade.properties.path}, else by the environment variable
      * {@code TRADE_PROPERTIES_PATH}, else {@code trade.properties} on the class path, else the
      * defaults.
      *
+     * @return this builder
      * @throws IllegalArgumentException if that configuration is invalid (the message names the key)
      */
     public Builder loadConfiguration() {
@@ -347,6 +533,9 @@ public final class TRADEContainer implements AutoCloseable {
     /**
      * Sets one setting.
      *
+     * @param key a key of docs/configuration.md, such as {@code CONTAINERNAME}
+     * @param value its value, as in a properties file
+     * @return this builder
      * @throws IllegalArgumentException for an unknown key or a bad value (the message names both)
      */
     public Builder property(String key, String value) {
@@ -355,13 +544,24 @@ public final class TRADEContainer implements AutoCloseable {
       return this;
     }
 
-    /** Sets every setting in {@code properties}, as {@link #property} does for each. */
+    /**
+     * Sets every setting in {@code properties}, as {@link #property} does for each.
+     *
+     * @param properties keys and values
+     * @return this builder
+     * @throws IllegalArgumentException for an unknown key or a bad value (the message names both)
+     */
     public Builder properties(Properties properties) {
       settings = settings.withAll(Objects.requireNonNull(properties, "properties == null"));
       return this;
     }
 
-    /** The container's name ({@code CONTAINERNAME}). */
+    /**
+     * The container's name ({@code CONTAINERNAME}).
+     *
+     * @param name the name
+     * @return this builder
+     */
     public Builder name(String name) {
       return property("CONTAINERNAME", name);
     }
@@ -369,6 +569,9 @@ public final class TRADEContainer implements AutoCloseable {
     /**
      * Strict mode ({@code COPYDATAFORLOCALINVOKES}): local calls copy mutable arguments and results,
      * so caller and provider never share a mutable object, as with remote calls.
+     *
+     * @param copy whether to copy
+     * @return this builder
      */
     public Builder copyDataForLocalInvokes(boolean copy) {
       return property("COPYDATAFORLOCALINVOKES", Boolean.toString(copy));
@@ -377,6 +580,7 @@ public final class TRADEContainer implements AutoCloseable {
     /**
      * Builds the container and starts its networking when the settings ask for it.
      *
+     * @return the container; close it when done
      * @throws java.io.UncheckedIOException if a listen address cannot be bound (the message names it)
      */
     public TRADEContainer build() {

@@ -12,10 +12,21 @@ package dev.trade;
 public class TRADEException extends Exception {
   private static final long serialVersionUID = 1L;
 
+  /**
+   * An exception with a message.
+   *
+   * @param message what went wrong and, where known, how to fix it
+   */
   public TRADEException(String message) {
     super(message);
   }
 
+  /**
+   * An exception with a message and a cause.
+   *
+   * @param message what went wrong and, where known, how to fix it
+   * @param cause the failure behind this one, or null
+   */
   public TRADEException(String message, Throwable cause) {
     super(message, cause);
   }

@@ -60,7 +60,12 @@ public final class TRADEServiceConstraints {
   /** Constraints that every service matches until methods are called. */
   public TRADEServiceConstraints() {}
 
-  /** Only services with this method name; {@code null} removes the constraint. */
+  /**
+   * Only services with this method name.
+   *
+   * @param name the method name; {@code null} removes the constraint
+   * @return this object
+   */
   public TRADEServiceConstraints name(String name) {
     this.name = name;
     return this;
@@ -70,6 +75,8 @@ public final class TRADEServiceConstraints {
    * Only services whose parameters accept exactly these types, in order. With no arguments: only
    * services without parameters. {@code argTypes((Class<?>[]) null)} removes the constraint.
    *
+   * @param types the parameter types, in order
+   * @return this object
    * @throws NullPointerException if one of the types is null
    */
   public TRADEServiceConstraints argTypes(Class<?>... types) {
@@ -84,25 +91,44 @@ public final class TRADEServiceConstraints {
     return this;
   }
 
-  /** Only services whose return type fits this one; {@code null} removes the constraint. */
+  /**
+   * Only services whose return type fits this one.
+   *
+   * @param type the return type; {@code null} removes the constraint
+   * @return this object
+   */
   public TRADEServiceConstraints returnType(Class<?> type) {
     this.returnType = type;
     return this;
   }
 
-  /** Only services registered in every one of these groups (adds to earlier calls). */
+  /**
+   * Only services registered in every one of these groups (adds to earlier calls).
+   *
+   * @param groups group names; null and blank names are ignored
+   * @return this object
+   */
   public TRADEServiceConstraints inGroups(String... groups) {
     addGroups(inGroups, groups);
     return this;
   }
 
-  /** Only services registered in none of these groups (adds to earlier calls). */
+  /**
+   * Only services registered in none of these groups (adds to earlier calls).
+   *
+   * @param groups group names; null and blank names are ignored
+   * @return this object
+   */
   public TRADEServiceConstraints notInGroups(String... groups) {
     addGroups(notInGroups, groups);
     return this;
   }
 
-  /** Only services of the container that performs the lookup. */
+  /**
+   * Only services of the container that performs the lookup.
+   *
+   * @return this object
+   */
   public TRADEServiceConstraints local() {
     this.local = true;
     return this;
@@ -111,13 +137,21 @@ public final class TRADEServiceConstraints {
   /**
    * Only services of containers on this host (the host name or address a container announces;
    * {@code null} removes the constraint).
+   *
+   * @param host the host name or address
+   * @return this object
    */
   public TRADEServiceConstraints host(String host) {
     this.host = host;
     return this;
   }
 
-  /** Also match services that match {@code alternative} (a copy of it is taken now). */
+  /**
+   * Also match services that match {@code alternative} (a copy of it is taken now).
+   *
+   * @param alternative other constraints; not null
+   * @return this object
+   */
   public TRADEServiceConstraints or(TRADEServiceConstraints alternative) {
     alternatives.add(Objects.requireNonNull(alternative, "alternative == null").copy());
     return this;
@@ -126,6 +160,9 @@ public final class TRADEServiceConstraints {
   /**
    * Exclude services that match {@code excluded} from this object's own conjunction (not from its
    * alternatives); a copy of it is taken now.
+   *
+   * @param excluded constraints of the services to exclude; not null
+   * @return this object
    */
   public TRADEServiceConstraints not(TRADEServiceConstraints excluded) {
     negations.add(Objects.requireNonNull(excluded, "excluded == null").copy());
@@ -162,7 +199,24 @@ public final class TRADEServiceConstraints {
         neg);
   }
 
-  private TRADEServiceConstraints copy() {
+  /**
+   * These constraints and, in every alternative, a service named {@code serviceName} whose
+   * parameters take {@code parameterTypes}: the lookup of a proxy's method. A new object.
+   */
+  TRADEServiceConstraints narrowed(String serviceName, Class<?>[] parameterTypes) {
+    if (alternatives.isEmpty() && name == null && argTypes == null) {
+      TRADEServiceConstraints c = copy();
+      c.name = serviceName;
+      c.argTypes = parameterTypes.clone();
+      return c;
+    }
+    // "A and B" as "A and not (not B)": negations are the one conjunction the model has across
+    // objects, and this keeps the name required, so the lookup scans that name only.
+    return new TRADEServiceConstraints().name(serviceName).argTypes(parameterTypes)
+        .not(new TRADEServiceConstraints().not(this));
+  }
+
+  TRADEServiceConstraints copy() {
     TRADEServiceConstraints c = new TRADEServiceConstraints();
     c.name = name;
     c.argTypes = argTypes;

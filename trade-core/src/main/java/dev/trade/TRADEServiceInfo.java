@@ -69,6 +69,14 @@ public final class TRADEServiceInfo implements Serializable {
    * against the signature before the service runs. Passing a single array to a service whose only
    * parameter is an array passes that array as the one argument.
    *
+   * <pre>{@code
+   * boolean opened = info.call(boolean.class, 3);
+   * }</pre>
+   *
+   * @param <T> the type of the result
+   * @param returnType the class of the result (see above); not null
+   * @param args the arguments, in the order of the service's parameters
+   * @return the service's result as {@code returnType}; null for {@code void.class}
    * @throws TRADEBadArgumentsException the arguments or {@code returnType} do not fit; nothing ran
    * @throws TRADEInvocationException the service threw; the cause is what it threw
    * @throws TRADEServiceUnavailableException the service is gone (deregistered, container left)
@@ -83,6 +91,10 @@ public final class TRADEServiceInfo implements Serializable {
   /**
    * This service info with another deadline for its calls (the default comes from the
    * {@code CALLTIMEOUT} setting). Equal to this one.
+   *
+   * @param timeout how long a call waits for a remote reply; positive
+   * @return a service info for the same service with that deadline
+   * @throws IllegalArgumentException if {@code timeout} is zero or negative
    */
   public TRADEServiceInfo withTimeout(Duration timeout) {
     if (timeout.isNegative() || timeout.isZero()) {
@@ -100,6 +112,7 @@ public final class TRADEServiceInfo implements Serializable {
   /**
    * The declared parameter types.
    *
+   * @return a new array of the parameter types, in order
    * @throws TypeNotPresentException if a parameter type is not known in this JVM
    */
   public Class<?>[] getServiceParameterTypes() {
@@ -111,35 +124,56 @@ public final class TRADEServiceInfo implements Serializable {
   }
 
   /**
-   * The declared return type ({@code void.class} for none).
+   * The declared return type.
    *
+   * @return the return type, {@code void.class} for none
    * @throws TypeNotPresentException if the type is not known in this JVM
    */
   public Class<?> getServiceReturnType() {
     return resolve(descriptor.returnTypeName());
   }
 
-  /** The groups the service was registered in, in registration order; empty for none. */
+  /**
+   * The groups the service was registered in.
+   *
+   * @return the groups in registration order; empty for none
+   */
   public Collection<String> getGroups() {
     return descriptor.groups();
   }
 
-  /** The annotations on the service method and the declarations it overrides, one per type. */
+  /**
+   * The annotations on the service method and the declarations it overrides.
+   *
+   * @return a new array with one annotation per type
+   */
   public Annotation[] getAnnotations() {
     return descriptor.annotations().toArray(new Annotation[0]);
   }
 
-  /** The id of the providing container's incarnation (new each time a container starts). */
+  /**
+   * The providing container's incarnation.
+   *
+   * @return its id, new each time a container starts
+   */
   public String getContainerId() {
     return descriptor.containerId();
   }
 
-  /** The providing container's name. */
+  /**
+   * The providing container's name.
+   *
+   * @return the {@code CONTAINERNAME} of the container that provides the service
+   */
   public String getContainerName() {
     return descriptor.containerName();
   }
 
-  /** The host of the providing container, as it announced itself. */
+  /**
+   * The host of the providing container.
+   *
+   * @return the host name or address the container announced
+   */
   public String getHost() {
     return descriptor.host();
   }
@@ -148,12 +182,18 @@ public final class TRADEServiceInfo implements Serializable {
    * How many links a call crosses from the container this info was obtained from to the providing
    * one: 0 for its own services, 1 for a directly connected container, more through forwarding;
    * -1 when the service is not known there (any more).
+   *
+   * @return the number of links, or -1
    */
   public int getDistance() {
     return caller.distance(descriptor);
   }
 
-  /** Whether the service is provided by the container this info was obtained from. */
+  /**
+   * Whether the service is provided by the container this info was obtained from.
+   *
+   * @return true for a service of that container
+   */
   public boolean isLocal() {
     return descriptor.containerId().equals(caller.containerId());
   }
@@ -191,8 +231,13 @@ public final class TRADEServiceInfo implements Serializable {
         + " @ " + descriptor.containerName();
   }
 
-  // Java serialization (for users that keep infos in Serializable objects) goes through a plain
-  // form and binds the result to the default container; annotations are not carried.
+  /**
+   * Java serialization (for users that keep infos in Serializable objects) goes through a plain
+   * form and binds the result to the default container; annotations are not carried.
+   *
+   * @return the plain form
+   * @throws ObjectStreamException never
+   */
   private Object writeReplace() throws ObjectStreamException {
     return new SerialForm(this);
   }

@@ -52,7 +52,8 @@ class CrossJvmExceptionsAndAllowListTest extends ProviderFixture {
         () -> service("fail").call(void.class, PROVIDER_ONLY));
     TRADERemoteException remote = assertInstanceOf(TRADERemoteException.class, e.getCause());
     assertEquals(PROVIDER_ONLY, remote.getRemoteTypeName());
-    assertEquals(PROVIDER_ONLY + ": thrown by " + PROVIDER_ONLY, remote.getMessage());
+    assertEquals("thrown by " + PROVIDER_ONLY, remote.getRemoteMessage());
+    assertTrue(remote.getMessage().startsWith(PROVIDER_ONLY + ": thrown by " + PROVIDER_ONLY), remote.getMessage());
     assertTrue(remote.getStackTrace().length > 0, "the remote stack trace travels");
   }
 
@@ -62,7 +63,9 @@ class CrossJvmExceptionsAndAllowListTest extends ProviderFixture {
         () -> service("fail").call(void.class, "secret"));
     TRADERemoteException remote = assertInstanceOf(TRADERemoteException.class, e.getCause());
     assertEquals("org.example.jvm.secret.Secrets$SecretException", remote.getRemoteTypeName());
-    assertTrue(remote.getMessage().endsWith("the code is 1234"), remote.getMessage());
+    assertTrue(remote.getRemoteMessage().endsWith("the code is 1234"), remote.getRemoteMessage());
+    assertTrue(remote.getMessage().endsWith("add it (or org.example.jvm.secret.*) to the"
+        + " SERIALIZATIONALLOWLIST setting]"), remote.getMessage());
   }
 
   @Test

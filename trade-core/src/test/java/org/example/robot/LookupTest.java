@@ -66,6 +66,26 @@ class LookupTest {
   }
 
   @Test
+  void notFoundSuggestsTheNearestNamesWithTheirSignatures() throws TRADEException {
+    trade.registerAllServices(new RobotArm(), "MyRobot");
+    TRADEServiceNotFoundException misspelled = assertThrows(TRADEServiceNotFoundException.class,
+        () -> trade.getAvailableService(new TRADEServiceConstraints().name("opnGripper")));
+    assertEquals("No service matches TRADEServiceConstraints{name=opnGripper}; did you mean"
+        + " boolean openGripper(int) [MyRobot] @ lookup?", misspelled.getMessage());
+
+    TRADEServiceNotFoundException wrongArguments = assertThrows(TRADEServiceNotFoundException.class,
+        () -> trade.getAvailableService(new TRADEServiceConstraints().name("openGripper")
+            .argTypes(String.class)));
+    assertEquals("No service matches TRADEServiceConstraints{name=openGripper,"
+        + " argTypes=(java.lang.String)}; services named openGripper: boolean openGripper(int)"
+        + " [MyRobot] @ lookup", wrongArguments.getMessage());
+
+    TRADEServiceNotFoundException farOff = assertThrows(TRADEServiceNotFoundException.class,
+        () -> trade.getAvailableService(new TRADEServiceConstraints().name("fly")));
+    assertEquals("No service matches TRADEServiceConstraints{name=fly}", farOff.getMessage());
+  }
+
+  @Test
   void orAndNotFormADisjunctiveNormalForm() throws TRADEException {
     trade.registerAllServices(new RobotArm(), "Sim");
     RobotArm real = new RobotArm();

@@ -14,6 +14,11 @@ import dev.trade.TRADEServiceNotFoundException;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
+import java.util.logging.Handler;
+import java.util.logging.Level;
+import java.util.logging.LogRecord;
+import java.util.logging.Logger;
+import java.util.logging.SimpleFormatter;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 
@@ -133,9 +138,41 @@ class RegistrationValidationTest {
         .call(String.class));
   }
 
+  /** Forgot the annotation. */
+  public static class Unannotated {
+    public void work() {}
+  }
+
   @Test
-  void objectWithoutServicesRegistersNothing() throws TRADEException {
-    assertTrue(trade.registerAllServices(new Object(), "g").isEmpty());
+  void objectWithoutServicesRegistersNothingAndWarnsNamingTheClassAndTheRule() throws TRADEException {
+    Logger registry = Logger.getLogger("dev.trade.registry");
+    List<LogRecord> records = new ArrayList<>();
+    Handler handler = new Handler() {
+      @Override
+      public synchronized void publish(LogRecord r) {
+        records.add(r);
+      }
+
+      @Override
+      public void flush() {}
+
+      @Override
+      public void close() {}
+    };
+    registry.addHandler(handler);
+    try {
+      assertTrue(trade.registerAllServices(new Unannotated(), "g").isEmpty());
+    } finally {
+      registry.removeHandler(handler);
+    }
+    synchronized (handler) {
+      assertEquals(1, records.size(), "one record");
+      assertEquals(Level.WARNING, records.get(0).getLevel());
+      assertEquals("registered a " + Unannotated.class.getName() + " in container "
+          + trade.getName() + " with no services: a service is a public method annotated"
+          + " @TRADEService, on the class or on an interface it implements",
+          new SimpleFormatter().formatMessage(records.get(0)));
+    }
   }
 
   @Test

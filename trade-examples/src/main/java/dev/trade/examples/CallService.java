@@ -20,9 +20,11 @@ import java.util.concurrent.TimeUnit;
  *
  * It waits (default 10 s) until a service named SERVICE, in all of the groups and taking as many
  * parameters as there are arguments, is available, converts each argument to its parameter type
- * (numbers, {@code true}/{@code false}, characters and strings), calls it and prints
- * {@code openGripper(int) @ arm returned true}. Exit status: 0 when the call returned, 1 when it
- * failed or no service came, 2 for bad arguments or configuration.
+ * (numbers, {@code true}/{@code false}, characters and strings as they are typed; records, arrays,
+ * lists and maps as JSON, such as {@code '{"x":0.4,"y":0.1}'} or {@code '[1,2,3]'}), calls it and
+ * prints {@code openGripper(int) @ arm returned true}. Arguments are numbered from 0, as the
+ * library's own messages number them. Exit status: 0 when the call returned (and for
+ * {@code --help}), 1 when it failed or no service came, 2 for bad arguments or configuration.
  */
 public final class CallService {
   private final Object joined = new Object();
@@ -37,7 +39,21 @@ public final class CallService {
     }
   }
 
+  static final String USAGE = """
+      usage: CallService [--config FILE] [--groups G1,G2] [--wait SECONDS] SERVICE [ARGUMENT...]
+        Calls the service SERVICE, in all of the groups and with as many parameters as arguments.
+        --config FILE     the trade.properties of the calling container (default: built-in)
+        --groups G1,G2    only services in all of these groups
+        --wait SECONDS    how long to wait for the service to appear (default 10)
+        ARGUMENT          as typed for numbers, true/false, characters and strings;
+                          JSON for records, arrays, lists and maps: '{"x":0.4,"y":0.1}' '[1,2]'
+      Classes of records the service takes must be on the class path (java -cp).""";
+
   public static void main(String[] args) throws InterruptedException {
+    if (args.length > 0 && (args[0].equals("--help") || args[0].equals("-h"))) {
+      System.out.println(USAGE);
+      System.exit(0);
+    }
     Path config = null;
     List<String> groups = new ArrayList<>();
     long waitSeconds = 10;
@@ -58,8 +74,7 @@ public final class CallService {
         throw new IllegalArgumentException("no service named");
       }
     } catch (IllegalArgumentException e) {
-      System.err.println(e.getMessage() + "\nusage: CallService [--config FILE] [--groups G1,G2]"
-          + " [--wait SECONDS] SERVICE [ARGUMENT...]");
+      System.err.println(e.getMessage() + "\n" + USAGE);
       System.exit(2);
     }
     ExampleContainers.configureLogging(false);
@@ -143,14 +158,24 @@ public final class CallService {
           case "boolean", "java.lang.Boolean" -> bool(text);
           case "char", "java.lang.Character" -> character(text);
           case "java.lang.String", "java.lang.Object", "java.lang.CharSequence" -> text;
-          default -> throw new IllegalArgumentException("cannot be typed on a command line");
+          default -> Json.to(parameterType(service, i), Json.parse(text));
         };
       } catch (IllegalArgumentException e) {
-        throw new IllegalArgumentException("argument " + (i + 1) + " '" + text + "' of "
-            + service.serviceString + " is not of type " + type + ": " + e.getMessage());
+        throw new IllegalArgumentException("Argument " + i + " ('" + service.serviceParameterNames[i]
+            + "', expected " + type + ") '" + text + "' does not fit: " + e.getMessage()
+            + "\n    for service " + service.serviceString);
       }
     }
     return values;
+  }
+
+  private static Class<?> parameterType(TRADEServiceInfo service, int i) {
+    try {
+      return service.getServiceParameterTypes()[i];
+    } catch (TypeNotPresentException e) {
+      throw new IllegalArgumentException("class " + e.typeName() + " is not on the class path;"
+          + " add it with java -cp");
+    }
   }
 
   private static Boolean bool(String text) {

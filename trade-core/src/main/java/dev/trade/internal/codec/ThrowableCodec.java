@@ -42,7 +42,7 @@ final class ThrowableCodec {
     String message = t.getMessage();
     if (t.getClass() == TRADERemoteException.class) { // travel on as the original exception
       typeName = ((TRADERemoteException) t).getRemoteTypeName();
-      message = originalMessage(typeName, message);
+      message = ((TRADERemoteException) t).getRemoteMessage();
     }
     ByteSink out = e.out;
     out.writeByte(Tags.THROWABLE);
@@ -69,15 +69,6 @@ final class ThrowableCodec {
       write(e, cause, seen);
     }
     e.leave();
-  }
-
-  /** The message a {@link TRADERemoteException} was made with, without its type-name prefix. */
-  private static String originalMessage(String typeName, String message) {
-    if (message == null || message.equals(typeName)) {
-      return null;
-    }
-    String prefix = typeName + ": ";
-    return message.startsWith(prefix) ? message.substring(prefix.length()) : message;
   }
 
   static Throwable read(Decoder d) throws TRADESerializationException {

@@ -24,6 +24,8 @@ import dev.trade.internal.registry.ServiceDescriptor;
 import dev.trade.internal.registry.Types;
 import java.io.IOException;
 import java.io.UncheckedIOException;
+import java.lang.System.Logger;
+import java.lang.System.Logger.Level;
 import java.net.InetSocketAddress;
 import java.util.ArrayList;
 import java.util.Collection;
@@ -41,6 +43,7 @@ import java.util.concurrent.atomic.AtomicInteger;
  * so that it sees calls from everywhere. This class is safe for concurrent use.
  */
 public final class ContainerCore implements ServiceCaller {
+  private static final Logger LOG = System.getLogger("dev.trade.registry");
   private static final AtomicInteger INSTANCES = new AtomicInteger();
   private static final int MAX_RESOLVED = 1024;
 
@@ -128,6 +131,13 @@ public final class ContainerCore implements ServiceCaller {
    */
   public List<LocalService> register(Object provider, Collection<String> groups) throws TRADEException {
     List<LocalService> services = registry.register(provider, groups);
+    if (services.isEmpty()) {
+      // Almost always a mistake (a missing annotation, a package-private method); the empty
+      // result alone is easy to overlook.
+      LOG.log(Level.WARNING, "registered a {0} in container {1} with no services: a service is a"
+          + " public method annotated @TRADEService, on the class or on an interface it implements",
+          provider.getClass().getName(), name);
+    }
     for (LocalService s : services) {
       for (Class<?> p : s.parameterTypes()) {
         allowList.addPackageOf(p);

@@ -70,6 +70,8 @@ final class Connector {
   private final Sink sink;
   private final List<ServerSocket> servers = new CopyOnWriteArrayList<>();
   private final Map<InetSocketAddress, Long> backoff = new ConcurrentHashMap<>();
+  private final RepeatedFailures<InetSocketAddress> failures =
+      new RepeatedFailures<>(TimeUnit.MINUTES.toNanos(1));
   /** Per kept address, the number of its one live retry chain; older chains end at their next step. */
   private final Map<InetSocketAddress, AtomicLong> chains = new ConcurrentHashMap<>();
   private volatile boolean closed;
@@ -196,15 +198,33 @@ final class Connector {
     workers.execute(() -> {
       try {
         connect(address);
+        failures.succeeded(address);
         backoff.put(address, MIN_BACKOFF_MS);
         schedule(address, chain, MAX_BACKOFF_MS);
       } catch (IOException | Handshake.Failure | RuntimeException e) {
-        LOG.log(delay >= MAX_BACKOFF_MS ? Level.INFO : Level.DEBUG,
-            "cannot connect to {0}: {1}; retrying in {2} ms", address, e.getMessage(), delay);
+        logFailure(address, e.getMessage(), delay, System.nanoTime());
         backoff.put(address, Math.min(MAX_BACKOFF_MS, delay * 2));
         schedule(address, chain, delay);
       }
     });
+  }
+
+  /**
+   * The first quick retries are DEBUG (a peer that is starting answers within them); once the
+   * backoff is at its longest the failure is reported at INFO, and then summarised at most once
+   * a minute however long the peer stays away.
+   */
+  private void logFailure(InetSocketAddress address, String why, long delayMs, long now) {
+    RepeatedFailures.Report r = delayMs >= MAX_BACKOFF_MS ? failures.failed(address, why, now) : null;
+    if (r == null) {
+      LOG.log(Level.DEBUG, "cannot connect to {0}: {1}; retrying in {2} ms", address, why, delayMs);
+    } else if (r.first()) {
+      LOG.log(Level.INFO, "cannot connect to {0}: {1}; retrying every {2} ms", address, why, delayMs);
+    } else {
+      LOG.log(Level.INFO, "cannot connect to {0}: {1}; failed {2} more times in the last {3} s,"
+          + " still retrying every {4} ms", address, why, r.repeats(),
+          TimeUnit.NANOSECONDS.toSeconds(r.sinceNanos()), delayMs);
+    }
   }
 
   private void schedule(InetSocketAddress address, long chain, long delayMs) {

@@ -83,6 +83,20 @@ final class Tables {
     return Registry.DeltaResult.APPLIED;
   }
 
+  /**
+   * Names the container, as every other line does; its id, which a user rarely needs and which
+   * changes at every start, only at DEBUG. A container's name travels in its services only.
+   */
+  private static void logLeft(String owner, Table table) {
+    if (table == null || table.services().isEmpty()) {
+      LOG.log(Level.INFO, "a container with no services left or is not reachable any more");
+    } else {
+      LOG.log(Level.INFO, "container {0} left or is not reachable any more",
+          table.services().get(0).containerName());
+    }
+    LOG.log(Level.DEBUG, "the container that left is {0}", owner);
+  }
+
   /** Every table of another container known here, listed or waiting (for digests and requests). */
   List<Table> known() {
     List<Table> result = registry.remoteTables();
@@ -99,8 +113,8 @@ final class Tables {
   void follow(Map<String, Topology.Route> routes, Map<String, Integer> moved, long nowNanos) {
     for (String owner : registry.remoteContainers()) {
       if (!routes.containsKey(owner)) {
-        LOG.log(Level.INFO, "container {0} left or is not reachable any more", owner);
         Table t = registry.removeContainer(owner);
+        logLeft(owner, t);
         if (t != null) {
           waiting.put(owner, new Waiting(t, nowNanos)); // listed again if reachable again soon
         }

@@ -372,6 +372,14 @@ public final class Registry {
     return snapshot.ordered();
   }
 
+  /**
+   * An object replaced at every change of the known services, to compare by identity: while it is
+   * the same, every entry found earlier is still known. Lock-free.
+   */
+  public Object generation() {
+    return snapshot;
+  }
+
   /** The entry of a known service, or null when it is not (or no longer) known here. */
   public Entry entry(ServiceDescriptor d) {
     return snapshot.entry(d);

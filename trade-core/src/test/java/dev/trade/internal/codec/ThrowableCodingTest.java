@@ -57,7 +57,11 @@ class ThrowableCodingTest {
     Throwable back = roundTrip(robot, TestTypes.strangerCodec());
     TRADERemoteException remote = assertInstanceOf(TRADERemoteException.class, back);
     assertEquals(RobotException.class.getName(), remote.getRemoteTypeName());
-    assertEquals(RobotException.class.getName() + ": arm stuck", remote.getMessage());
+    assertEquals(RobotException.class.getName() + ": arm stuck [not received as itself: to receive"
+        + " it, have " + RobotException.class.getName() + " on this JVM's class path and add it (or "
+        + RobotException.class.getPackageName() + ".*) to the SERIALIZATIONALLOWLIST setting]",
+        remote.getMessage());
+    assertEquals("arm stuck", remote.getRemoteMessage());
     assertArrayEquals(robot.getStackTrace(), remote.getStackTrace());
     assertSame(IllegalArgumentException.class, remote.getCause().getClass()); // java.lang is allowed
   }
@@ -80,7 +84,7 @@ class ThrowableCodingTest {
     Throwable back = (Throwable) codec.decode(out.toByteArray(), loader());
     TRADERemoteException remote = assertInstanceOf(TRADERemoteException.class, back);
     assertEquals("com.example.GripperJamException", remote.getRemoteTypeName());
-    assertEquals("com.example.GripperJamException: jammed", remote.getMessage());
+    assertTrue(remote.getMessage().startsWith("com.example.GripperJamException: jammed ["), remote.getMessage());
     assertEquals(new StackTraceElement("com.example.Gripper", "close", "Gripper.java", 42),
         remote.getStackTrace()[0]);
   }

@@ -27,6 +27,7 @@ import java.util.regex.Pattern;
  * deadline 45s                        # optional: after this long, stop everything and fail
  * properties demo.properties          # optional: the trade.properties of every component
  * java-options -Xmx64m                # optional: JVM options of every component
+ * classpath lib/*.jar build/classes   # optional: class path entries of every component
  * component NAME [OPTION...] -- MAIN-CLASS [ARGUMENT...]
  * </pre>
  *
@@ -91,14 +92,16 @@ public final class LaunchFile {
   private final Duration deadline;
   private final Path properties;
   private final List<String> javaOptions;
+  private final List<String> classPath;
   private final List<Component> components;
 
   private LaunchFile(Path file, Duration deadline, Path properties, List<String> javaOptions,
-      List<Component> components) {
+      List<String> classPath, List<Component> components) {
     this.file = file;
     this.deadline = deadline;
     this.properties = properties;
     this.javaOptions = List.copyOf(javaOptions);
+    this.classPath = List.copyOf(classPath);
     this.components = List.copyOf(components);
   }
 
@@ -123,6 +126,7 @@ public final class LaunchFile {
     Duration deadline = null;
     Path properties = null;
     List<String> javaOptions = new ArrayList<>();
+    List<String> classPath = new ArrayList<>();
     Map<String, Component> components = new LinkedHashMap<>();
     Map<String, Integer> lineOf = new LinkedHashMap<>();
     for (int n = 1; n <= lines.size(); n++) {
@@ -137,6 +141,13 @@ public final class LaunchFile {
           case "deadline" -> deadline = duration(single(rest, "deadline DURATION"));
           case "properties" -> properties = dir.resolve(single(rest, "properties FILE")).normalize();
           case "java-options" -> javaOptions.addAll(rest);
+          case "classpath" -> {
+            if (rest.isEmpty()) {
+              throw new IllegalArgumentException("expected classpath ENTRY...");
+            }
+            // Java's own "dir/*" wildcard passes through resolve() unchanged.
+            rest.forEach(entry -> classPath.add(dir.resolve(entry).normalize().toString()));
+          }
           case "component" -> {
             Component c = component(rest);
             if (components.putIfAbsent(c.name(), c) != null) {
@@ -145,7 +156,7 @@ public final class LaunchFile {
             lineOf.put(c.name(), n);
           }
           default -> throw new IllegalArgumentException("unknown directive '" + words.get(0)
-              + "'; expected deadline, properties, java-options or component");
+              + "'; expected deadline, properties, java-options, classpath or component");
         }
       } catch (IllegalArgumentException e) {
         throw new IllegalArgumentException(where + e.getMessage(), e);
@@ -166,7 +177,8 @@ public final class LaunchFile {
     if (components.isEmpty()) {
       throw new IllegalArgumentException(file + ": no component");
     }
-    return new LaunchFile(file, deadline, properties, javaOptions, new ArrayList<>(components.values()));
+    return new LaunchFile(file, deadline, properties, javaOptions, classPath,
+        new ArrayList<>(components.values()));
   }
 
   private static boolean startsNever(Component c, Map<String, Component> all, Set<String> seen) {
@@ -321,6 +333,14 @@ public final class LaunchFile {
   /** JVM options for every component. */
   public List<String> javaOptions() {
     return javaOptions;
+  }
+
+  /**
+   * Class path entries of every component, besides the launcher's own class path: absolute, in
+   * file order.
+   */
+  public List<String> classPath() {
+    return classPath;
   }
 
   /** The components, in file order. */

@@ -1,5 +1,6 @@
 package dev.trade.examples.launch;
 
+import java.io.File;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.io.Reader;
@@ -28,11 +29,13 @@ import java.util.concurrent.TimeUnit;
  * and stops them all when the launch ends, when its deadline passes, or on Ctrl-C:
  *
  * <pre>
- * java -cp CLASSPATH dev.trade.examples.launch.Launcher [--set KEY=VALUE]... LAUNCH-FILE
+ * java -cp CLASSPATH dev.trade.examples.launch.Launcher [--set KEY=VALUE]... [--classpath CP]... LAUNCH-FILE
  * </pre>
  *
  * Every component runs {@code java [java-options] -cp CLASSPATH [-Dtrade.properties.path=FILE]
- * MAIN-CLASS ARGUMENTS} with this JVM's class path. {@code --set} overrides a key of the launch
+ * MAIN-CLASS ARGUMENTS}, where CLASSPATH is this JVM's class path (TRADE itself), then the
+ * entries given with {@code --classpath} (your components), then those of the launch file's
+ * {@code classpath} directive. {@code --set} overrides a key of the launch
  * file's {@code properties} (for example a {@code TRADESYSID} of its own for a test run).
  *
  * <p>The launch ends when a component marked {@code exit} exits, or when nothing runs any more and
@@ -45,6 +48,8 @@ import java.util.concurrent.TimeUnit;
  * only queue events for it. {@link #stopAll()} may be called from any thread.
  */
 public final class Launcher {
+  private static final String USAGE =
+      "usage: Launcher [--set KEY=VALUE]... [--classpath CLASSPATH]... LAUNCH-FILE";
   private static final Duration STOP_GRACE = Duration.ofSeconds(5);
 
   private final LaunchFile launch;
@@ -92,6 +97,7 @@ public final class Launcher {
 
   public static void main(String[] args) throws InterruptedException {
     Map<String, String> overrides = new LinkedHashMap<>();
+    List<String> classPath = new ArrayList<>();
     Path file = null;
     LaunchFile launch;
     Path properties;
@@ -100,14 +106,16 @@ public final class Launcher {
         if (args[i].equals("--set") && i + 1 < args.length && args[i + 1].indexOf('=') > 0) {
           String kv = args[++i];
           overrides.put(kv.substring(0, kv.indexOf('=')), kv.substring(kv.indexOf('=') + 1));
+        } else if ((args[i].equals("--classpath") || args[i].equals("-cp")) && i + 1 < args.length) {
+          classPath.add(args[++i]);
         } else if (args[i].startsWith("-") || file != null) {
-          throw new IllegalArgumentException("usage: Launcher [--set KEY=VALUE]... LAUNCH-FILE");
+          throw new IllegalArgumentException(USAGE);
         } else {
           file = Path.of(args[i]);
         }
       }
       if (file == null) {
-        throw new IllegalArgumentException("usage: Launcher [--set KEY=VALUE]... LAUNCH-FILE");
+        throw new IllegalArgumentException(USAGE);
       }
       launch = LaunchFile.read(file);
       properties = withOverrides(launch.properties(), overrides);
@@ -116,11 +124,23 @@ public final class Launcher {
       System.exit(2);
       return;
     }
-    Launcher launcher = new Launcher(launch, System.getProperty("java.class.path"), properties,
-        System.out);
+    Launcher launcher = new Launcher(launch,
+        classPath(System.getProperty("java.class.path"), classPath, launch), properties, System.out);
     // Ctrl-C and kill stop the components too; after a normal end this finds nothing to stop.
     Runtime.getRuntime().addShutdownHook(new Thread(launcher::stopAll, "launch-shutdown"));
     System.exit(launcher.run());
+  }
+
+  /**
+   * The components' class path: the launcher's own (TRADE), then the command line's, then the
+   * launch file's entries.
+   */
+  static String classPath(String own, List<String> given, LaunchFile launch) {
+    List<String> all = new ArrayList<>();
+    all.add(own);
+    all.addAll(given);
+    all.addAll(launch.classPath());
+    return String.join(File.pathSeparator, all);
   }
 
   /** {@code properties} with {@code overrides} applied, in a temporary file; or as it is. */

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trade.examples.Jvms;
+import java.io.File;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
@@ -51,11 +52,25 @@ class LaunchFileTest {
   }
 
   @Test
+  void classpathEntriesAreRelativeToTheFileAndFollowTheLaunchersOwn() {
+    LaunchFile f = parse(
+        "classpath build/classes ../lib/*",
+        "classpath /opt/robot/robot.jar",
+        "component a -- A");
+    assertEquals(List.of("/robots/build/classes", "/lib/*", "/opt/robot/robot.jar"), f.classPath());
+    assertEquals(String.join(File.pathSeparator, "trade.jar", "mine.jar", "/robots/build/classes",
+        "/lib/*", "/opt/robot/robot.jar"),
+        Launcher.classPath("trade.jar", List.of("mine.jar"), f));
+    assertEquals(FILE + ":1: expected classpath ENTRY...", error("classpath", "component a -- A"));
+  }
+
+  @Test
   void defaultsAreNoDeadlineNoPropertiesNoOptions() {
     LaunchFile f = parse("component a -- A");
     assertNull(f.deadline());
     assertNull(f.properties());
     assertEquals(List.of(), f.javaOptions());
+    assertEquals(List.of(), f.classPath());
   }
 
   @Test
@@ -70,7 +85,7 @@ class LaunchFileTest {
   @Test
   void mistakesNameTheFileLineAndWhatIsExpected() {
     assertEquals("/robots/test.launch:2: unknown directive 'start'; expected deadline, properties,"
-        + " java-options or component", error("component a -- A", "start b"));
+        + " java-options, classpath or component", error("component a -- A", "start b"));
     assertEquals("/robots/test.launch:1: expected: component NAME [OPTION...] -- MAIN-CLASS"
         + " [ARGUMENT...]", error("component a A"));
     assertEquals("/robots/test.launch:1: 'soon' is not a duration such as 500ms or 3s",

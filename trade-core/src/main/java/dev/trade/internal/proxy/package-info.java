@@ -1,0 +1,12 @@
+/**
+ * Typed proxies: an implementation of a user's interface whose methods call the services of the
+ * same name and parameter types.
+ *
+ * <p>{@link dev.trade.internal.proxy.Proxies} is the only entry point. Each interface method is
+ * parsed once into an immutable {@code MethodModel} (the constraints that find its service, the
+ * return type to call with, how its failures are thrown), cached per interface for the life of the
+ * class. Each proxy holds one {@code Binding} per method: the service it resolved, replaced when
+ * that service is no longer known to the container. Calls run on the caller's thread, except those
+ * of methods returning {@code CompletableFuture}, which run on the container's proxy executor.
+ */
+package dev.trade.internal.proxy;
