@@ -2,6 +2,7 @@ package dev.trade.internal.net;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import dev.trade.testing.Await;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
@@ -55,14 +56,14 @@ class ConnectorTest {
         });
     try {
       connector.keepConnected(nobody);
-      Deadline.await(Duration.ofSeconds(5), () -> attempts.get() >= 1, "the first attempt");
+      Await.until(Duration.ofSeconds(5), () -> attempts.get() >= 1, "the first attempt");
       for (int i = 0; i < 20; i++) { // as if 20 links were lost
         connector.retryNow();
       }
       long start = System.nanoTime();
       int before = attempts.get();
       // One chain backs off 50, 100, 200, 400 ms between attempts; 21 chains would be done at once.
-      Deadline.await(Duration.ofSeconds(5), () -> attempts.get() >= before + 5, "5 more attempts");
+      Await.until(Duration.ofSeconds(5), () -> attempts.get() >= before + 5, "5 more attempts");
       long tookMs = (System.nanoTime() - start) / 1_000_000;
       assertTrue(tookMs >= 500, "5 attempts in " + tookMs + " ms: several retry chains are running");
     } finally {

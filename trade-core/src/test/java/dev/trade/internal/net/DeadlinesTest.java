@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trade.TRADETimeoutException;
 import dev.trade.internal.registry.ServiceDescriptor;
+import dev.trade.testing.Await;
 import java.time.Duration;
 import java.util.List;
 import java.util.Map;
@@ -69,7 +70,7 @@ class DeadlinesTest {
   void theSweepStopsWhenNothingIsPendingAndStartsAgainWithTheNextCall() throws Exception {
     RemoteCalls.Pending first = call(1, Duration.ofMillis(10));
     assertThrows(ExecutionException.class, () -> first.reply().get(10, TimeUnit.SECONDS));
-    Deadline.await(Duration.ofSeconds(10), () -> !deadlines.sweeping(), "the sweep to stop");
+    Await.until(Duration.ofSeconds(10), () -> !deadlines.sweeping(), "the sweep to stop");
     RemoteCalls.Pending next = call(2, Duration.ofMillis(10));
     assertTrue(deadlines.sweeping());
     assertThrows(ExecutionException.class, () -> next.reply().get(10, TimeUnit.SECONDS));

@@ -9,6 +9,7 @@ import dev.trade.internal.codec.Codec;
 import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.codec.Limits;
 import dev.trade.internal.registry.Registry;
+import dev.trade.testing.Await;
 import java.time.Duration;
 import java.util.Set;
 import java.util.UUID;
@@ -70,7 +71,7 @@ class HoldDownEndsTest {
       return null;
     });
     long first = System.nanoTime();
-    Deadline.await(Duration.ofSeconds(1), () -> System.nanoTime() != first, "time passes");
+    Await.until(Duration.ofSeconds(1), () -> System.nanoTime() != first, "time passes");
     onControl(() -> {
       // n loses c and links it again before c's own state changes: c is held down, and its
       // hold-down ends after b's.
@@ -82,7 +83,7 @@ class HoldDownEndsTest {
       assertNull(routing.route(c), "held down");
       return null;
     });
-    Deadline.await(Duration.ofSeconds(5), () -> onControl(() -> routing.route(c) != null),
+    Await.until(Duration.ofSeconds(5), () -> onControl(() -> routing.route(c) != null),
         "c routed again once its hold-down ended");
     assertTrue(onControl(() -> routing.route(b) == null), "b still unreachable");
   }

@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import dev.trade.internal.codec.ByteSink;
+import dev.trade.testing.Await;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.net.Socket;
@@ -130,7 +131,7 @@ class LentReadingTest {
   private void borrow(Link link) throws IOException {
     link.role.borrow();
     sendFromFar(Wire.PING);
-    Deadline.await(WAIT, link.role::isLent, "the link's thread to lend reading");
+    Await.until(WAIT, link.role::isLent, "the link's thread to lend reading");
   }
 
   private static long in(Duration d) {
@@ -162,18 +163,18 @@ class LentReadingTest {
     link.role.touch(); // a lone caller called just before
     assertTrue(wait.borrow(link), "a lone caller reads its reply itself");
     sendFromFar(Wire.PING); // lets the link's thread, blocked in a read, see the caller
-    Deadline.await(WAIT, link.role::isLent, "the link's thread to lend reading");
+    Await.until(WAIT, link.role::isLent, "the link's thread to lend reading");
     Thread[] caller = new Thread[1];
     long spunLongAgo = System.nanoTime() - Duration.ofSeconds(1).toNanos();
     Future<byte[]> reply = workers.submit(() -> {
       caller[0] = Thread.currentThread();
       return wait.await(link, true, h.reply, spunLongAgo);
     });
-    Deadline.await(WAIT, link.role::isCallerReading, "the caller to wait in a read");
+    Await.until(WAIT, link.role::isCallerReading, "the caller to wait in a read");
     sendFromFar(Wire.REPLY);
     assertEquals(8, reply.get(WAIT.toMillis(), TimeUnit.MILLISECONDS).length, "the reply");
     assertSame(caller[0], h.replyReaders.poll(), "the caller read its reply");
-    Deadline.await(WAIT, () -> !link.role.isLent(), "the link's thread to take reading back");
+    Await.until(WAIT, () -> !link.role.isLent(), "the link's thread to take reading back");
   }
 
   /**
@@ -252,13 +253,13 @@ class LentReadingTest {
     link.role.touch(); // a lone caller called just before
     assertTrue(wait.borrow(link), "a lone caller calling again at once reads its reply itself");
     sendFromFar(Wire.PING); // lets the link's thread, blocked in a read, see the caller
-    Deadline.await(WAIT, link.role::isLent, "the link's thread to lend reading");
+    Await.until(WAIT, link.role::isLent, "the link's thread to lend reading");
     Thread[] caller = new Thread[1];
     Future<byte[]> reply = workers.submit(() -> {
       caller[0] = Thread.currentThread();
       return wait.await(link, true, h.reply, System.nanoTime());
     });
-    Deadline.await(WAIT, () -> !link.role.isLent(), "the link's thread to read for the caller");
+    Await.until(WAIT, () -> !link.role.isLent(), "the link's thread to read for the caller");
     sendFromFar(Wire.REPLY);
     assertEquals(8, reply.get(WAIT.toMillis(), TimeUnit.MILLISECONDS).length, "the reply");
     assertNotEquals(caller[0], h.replyReaders.poll(), "the parked caller read its reply");
@@ -277,7 +278,7 @@ class LentReadingTest {
     assertTrue(System.nanoTime() - start < WAIT.toNanos(), "stopped waiting");
     assertEquals(0, link.readTimeout(), "the link's thread reads without a timeout");
     link.role.giveBack(false);
-    Deadline.await(WAIT, () -> !link.role.isLent(), "the link's thread to take reading back");
+    Await.until(WAIT, () -> !link.role.isLent(), "the link's thread to take reading back");
     sendFromFar(Wire.REPLY);
     Thread reader = h.replyReaders.poll(WAIT.toMillis(), TimeUnit.MILLISECONDS);
     assertNotEquals(null, reader, "a frame after the caller stopped was read");
@@ -292,7 +293,7 @@ class LentReadingTest {
     borrow(link);
     link.reader.readFor(new CompletableFuture<>(), in(Duration.ofMillis(1))); // no reply comes
     link.role.giveBack(false);
-    Deadline.await(WAIT, () -> !link.role.isLent(), "the link's thread to take reading back");
+    Await.until(WAIT, () -> !link.role.isLent(), "the link's thread to take reading back");
     sendFromFar(Wire.REPLY);
     Thread reader = h.replyReaders.poll(WAIT.toMillis(), TimeUnit.MILLISECONDS);
     assertNotEquals(null, reader, "a frame after the callers stopped was read");
@@ -329,7 +330,7 @@ class LentReadingTest {
       link.reader.readFor(h.reply, in(WAIT));
       link.role.giveBack(!h.reply.isDone());
     });
-    Deadline.await(WAIT, link.role::isCallerReading, "the caller to read");
+    Await.until(WAIT, link.role::isCallerReading, "the caller to read");
     byte[] ping = frameOf(Wire.PING, ASKS);
     byte[] other = frameOf(Wire.LINKS, 0); // not answered
     byte[] two = new byte[ping.length + other.length]; // two frames in one write: a burst
@@ -355,7 +356,7 @@ class LentReadingTest {
       link.reader.readFor(h.reply, in(Duration.ofMinutes(2))); // its reply never comes
       link.role.giveBack(!h.reply.isDone());
     });
-    Deadline.await(WAIT, link.role::isCallerReading, "the caller to read");
+    Await.until(WAIT, link.role::isCallerReading, "the caller to read");
     far[0].getOutputStream().write(new byte[] {0, 0, 0, 1, 0}); // a frame shorter than allowed
     far[0].getOutputStream().flush();
     caller.get(WAIT.toMillis(), TimeUnit.MILLISECONDS); // it stops once the link has ended
@@ -395,13 +396,13 @@ class LentReadingTest {
     // link's thread, reading again, finds the end.
     link.reader.readFor(h.reply, in(Duration.ofMillis(1)));
     link.role.giveBack(!h.reply.isDone());
-    Deadline.await(WAIT, link::isClosed, "the link to close");
+    Await.until(WAIT, link::isClosed, "the link to close");
     assertEndedOnce(link, h, "connection closed by lentpeer");
   }
 
   private static void assertEndedOnce(Link link, Handler h, String why) {
     assertTrue(link.isClosed());
-    Deadline.await(WAIT, () -> h.closings.get() > 0 && Thread.getAllStackTraces().keySet().stream()
+    Await.until(WAIT, () -> h.closings.get() > 0 && Thread.getAllStackTraces().keySet().stream()
         .noneMatch(t -> t.getName().equals("trade-link-lentpeer")), "the link's threads to end");
     assertEquals(1, h.closings.get(), "times the handler heard of the end");
     assertEquals(why, h.why);

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import dev.trade.testing.Await;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.util.ArrayList;
@@ -170,7 +171,7 @@ class LinkOutputTest {
       }
     });
     sender.start();
-    Deadline.await(java.time.Duration.ofSeconds(10),
+    Await.until(java.time.Duration.ofSeconds(10),
         () -> sender.getState() == Thread.State.TIMED_WAITING, "the sender waiting for room");
     closed.set(true);
     output.wakeRoomWaiters(); // as Link.close does
@@ -261,7 +262,7 @@ class LinkOutputTest {
     output.offerPassedOn(call(60_000));
     output.offerPassedOn(call(1));
     long offered = System.nanoTime();
-    Deadline.await(java.time.Duration.ofSeconds(5),
+    Await.until(java.time.Duration.ofSeconds(5),
         () -> System.nanoTime() - offered > TimeUnit.MILLISECONDS.toNanos(5), "5 ms to pass");
     output.write(false);
 

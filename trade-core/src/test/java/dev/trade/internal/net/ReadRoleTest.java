@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import dev.trade.testing.Await;
 import java.time.Duration;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
@@ -24,7 +25,7 @@ class ReadRoleTest {
   /** The link's thread lends reading on a thread of its own; completes with what lend says. */
   private CompletableFuture<Boolean> lending() {
     CompletableFuture<Boolean> back = CompletableFuture.supplyAsync(role::lend);
-    Deadline.await(WAIT, role::isLent, "the link's thread to lend reading");
+    Await.until(WAIT, role::isLent, "the link's thread to lend reading");
     return back;
   }
 
@@ -90,7 +91,7 @@ class ReadRoleTest {
     ReadRole shortLinger = new ReadRole(oneMs, oneMs);
     shortLinger.borrow();
     shortLinger.giveBack(false);
-    Deadline.await(WAIT, () -> !shortLinger.shouldLend(), "the linger to end");
+    Await.until(WAIT, () -> !shortLinger.shouldLend(), "the linger to end");
   }
 
   /**
@@ -109,7 +110,7 @@ class ReadRoleTest {
     role.borrow();
     long calledAt = System.nanoTime();
     role.giveBack(false);
-    Deadline.await(WAIT, () -> System.nanoTime() - calledAt >= 2 * ms, "a period of 2 ms");
+    Await.until(WAIT, () -> System.nanoTime() - calledAt >= 2 * ms, "a period of 2 ms");
     assertTrue(role.lendingPays() || System.nanoTime() - calledAt > 10 * ms);
     role.borrow();
     long period = System.nanoTime() - calledAt;
@@ -120,7 +121,7 @@ class ReadRoleTest {
     }
     role.giveBack(false);
     long calledAgain = System.nanoTime();
-    Deadline.await(WAIT, () -> System.nanoTime() - calledAgain > 11 * ms, "a period past the most");
+    Await.until(WAIT, () -> System.nanoTime() - calledAgain > 11 * ms, "a period past the most");
     assertFalse(role.lendingPays(), "a caller slower than the longest linger borrows");
     role.touch(); // it calls without borrowing
     assertFalse(role.shouldLend(), "reading is lent after a call that did not borrow");

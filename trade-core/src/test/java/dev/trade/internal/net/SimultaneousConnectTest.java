@@ -8,6 +8,7 @@ import dev.trade.TRADEContainer;
 import dev.trade.TRADEException;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
+import dev.trade.testing.Await;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.ServerSocket;
@@ -45,10 +46,10 @@ class SimultaneousConnectTest {
       b.registerAllServices(new Named("twin-b"), "b");
       TRADEServiceConstraints fromA = new TRADEServiceConstraints().inGroups("a");
       TRADEServiceConstraints fromB = new TRADEServiceConstraints().inGroups("b");
-      Deadline.await(WAIT, () -> !a.getAvailableServices(fromB).isEmpty()
+      Await.until(WAIT, () -> !a.getAvailableServices(fromB).isEmpty()
           && !b.getAvailableServices(fromA).isEmpty(), "the services to cross");
       // Each link has one reader thread per side, named after the peer.
-      Deadline.await(WAIT, () -> readers("twin-b") == 1 && readers("twin-a") == 1,
+      Await.until(WAIT, () -> readers("twin-b") == 1 && readers("twin-a") == 1,
           "one link (readers in a: " + readers("twin-b") + ", in b: " + readers("twin-a") + ")");
       for (int i = 0; i < 50; i++) {
         assertEquals("twin-b", a.getAvailableService(fromB).call(String.class));

@@ -1,13 +1,19 @@
-package org.example.net;
+package dev.trade.testing;
 
 import java.time.Duration;
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.BooleanSupplier;
 
-/** Waits for a condition with a deadline, checking it often; fails with a message at the deadline. */
+/**
+ * Waits for a condition until a deadline, checking it every millisecond. The only waiting loop of
+ * the tests: the deadline is compared as a difference of {@code nanoTime} values, which stays
+ * right when the counter overflows, and the timeout is only an upper bound (a test passes as soon
+ * as its condition holds, however fast or slow the machine).
+ */
 public final class Await {
   private Await() {}
 
+  /** @throws AssertionError naming {@code what} if the condition is still false at the deadline */
   public static void until(Duration timeout, BooleanSupplier condition, String what) {
     long deadline = System.nanoTime() + timeout.toNanos();
     while (!condition.getAsBoolean()) {
