@@ -8,6 +8,7 @@ import dev.trade.internal.call.CallChain;
 import dev.trade.internal.call.CallLink;
 import dev.trade.internal.call.Invocation;
 import dev.trade.internal.call.LocalInvoker;
+import dev.trade.internal.call.Provider;
 import dev.trade.internal.call.Returns;
 import dev.trade.internal.call.ServiceCaller;
 import dev.trade.internal.call.ValueCopier;
@@ -102,7 +103,7 @@ public final class ContainerCore implements ServiceCaller {
 
   private Network startNetwork() {
     Codec tables = new Codec(allowList, limits, InfoBinding.DESCRIPTORS, false);
-    Network n = new Network(settings, uuid, name, host, registry, codec, tables, new Network.Host() {
+    Network n = new Network(settings, uuid, name, host, registry, codec, tables, new Provider() {
       @Override
       public LocalService local(long serviceId) {
         return registry.local(serviceId);

@@ -35,14 +35,14 @@ final class LinkSwaps {
   private final Map<UUID, Integer> handshaking = new ConcurrentHashMap<>();
   private final long holdNanos;
   private final long retireNanos;
-  private final Replication.Scheduler later;
+  private final ControlScheduler later;
 
   /**
    * @param holdNanos the longest a loss is held: the handshake timeout
    * @param retireNanos how long a retired link waits for its peer to close it (FAILURETIMEOUT)
    * @param later runs a task on the control thread after a delay
    */
-  LinkSwaps(long holdNanos, long retireNanos, Replication.Scheduler later) {
+  LinkSwaps(long holdNanos, long retireNanos, ControlScheduler later) {
     this.holdNanos = holdNanos;
     this.retireNanos = retireNanos;
     this.later = later;

@@ -3,11 +3,10 @@ package dev.trade.internal.net;
 import static dev.trade.internal.net.ControlExecutor.daemon;
 
 import dev.trade.TRADEException;
-import dev.trade.internal.call.Invocation;
+import dev.trade.internal.call.Provider;
 import dev.trade.internal.codec.Codec;
 import dev.trade.internal.config.PeerAddress;
 import dev.trade.internal.config.Settings;
-import dev.trade.internal.registry.LocalService;
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
 import java.io.IOException;
@@ -39,13 +38,6 @@ import java.util.concurrent.TimeoutException;
  */
 public final class Network implements AutoCloseable {
   private static final Logger LOG = System.getLogger("dev.trade.net");
-
-  /** The providing side of the container: its services and its host chain. */
-  public interface Host {
-    LocalService local(long serviceId);
-
-    Object invoke(Invocation call) throws TRADEException;
-  }
 
   private final Settings settings;
   private final UUID self;
@@ -79,7 +71,7 @@ public final class Network implements AutoCloseable {
    * @param tableCodec a codec whose service-info binding is the descriptor itself
    */
   public Network(Settings settings, UUID self, String name, String host, Registry registry,
-      Codec codec, Codec tableCodec, Host provider) {
+      Codec codec, Codec tableCodec, Provider provider) {
     this.settings = settings;
     this.self = self;
     this.name = name;
@@ -89,7 +81,7 @@ public final class Network implements AutoCloseable {
     this.readWatch = new ReadWatch(live, workers, name);
     this.calls = new RemoteCalls(self, codec, this::nextHop, provider, timer,
         settings.maxFrameSize());
-    this.replication = new Replication(self, registry, tableCodec, links, calls,
+    this.replication = new Replication(self, registry, tableCodec, links,
         settings.failureTimeout().plus(settings.heartbeatInterval()).toNanos(),
         this::onControlAfter, this::unreachable);
     // The frames of a burst of state changes leave together (one system call per link).
@@ -186,8 +178,12 @@ public final class Network implements AutoCloseable {
     return discovery.isBroadcasting();
   }
 
-  /** A container left or died (routing lost it): discovery stops counting it at once. */
+  /**
+   * A container left or died (routing lost it; on the control thread): the calls waiting on it fail
+   * at once, and discovery stops counting it.
+   */
   private void unreachable(UUID container) {
+    calls.failTo(container, "container " + container + " left or is not reachable any more");
     discovery.unreachable(container);
   }
 

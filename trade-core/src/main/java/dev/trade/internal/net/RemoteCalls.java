@@ -7,6 +7,7 @@ import dev.trade.TRADESerializationException;
 import dev.trade.TRADEServiceUnavailableException;
 import dev.trade.TRADETimeoutException;
 import dev.trade.internal.call.LocalInvoker;
+import dev.trade.internal.call.Provider;
 import dev.trade.internal.codec.ByteSink;
 import dev.trade.internal.codec.ByteSource;
 import dev.trade.internal.codec.Codec;
@@ -84,7 +85,7 @@ final class RemoteCalls {
   private final ScheduledExecutorService timer;
 
   /** @param maxFrame the largest frame (after its length field) that peers accept: MAXFRAMESIZE */
-  RemoteCalls(UUID self, Codec codec, Router router, Network.Host host,
+  RemoteCalls(UUID self, Codec codec, Router router, Provider host,
       ScheduledExecutorService timer, int maxFrame) {
     this.self = self;
     this.codec = codec;

@@ -40,12 +40,7 @@ final class Replication {
   private final Map<UUID, Link> links;
   private final Topology topology;
 
-  /** Runs a task on the control thread after a delay in nanoseconds. */
-  interface Scheduler {
-    void schedule(Runnable task, long delayNanos);
-  }
-
-  private final Scheduler scheduler;
+  private final ControlScheduler scheduler;
   /** When this container's own link state last went out (nanoTime), and which version. */
   private long ownFloodAt;
   private long ownFlooded;
@@ -69,8 +64,8 @@ final class Replication {
    * @param unreachable told, on the control thread, of each container that was reachable and is not
    *     any more
    */
-  Replication(UUID self, Registry registry, Codec tableCodec, Map<UUID, Link> links, RemoteCalls calls,
-      long holdDownNanos, Scheduler scheduler, Consumer<UUID> unreachable) {
+  Replication(UUID self, Registry registry, Codec tableCodec, Map<UUID, Link> links,
+      long holdDownNanos, ControlScheduler scheduler, Consumer<UUID> unreachable) {
     this.scheduler = scheduler;
     this.selfId = self.toString();
     this.registry = registry;
@@ -79,7 +74,7 @@ final class Replication {
     this.topology = new Topology(selfId, holdDownNanos);
     this.tables = new Tables(registry, STATE_GRACE_NANOS);
     this.filter = new FloodFilter(topology, registry, tables);
-    this.routing = new Routing(topology, tables, registry, filter, calls, unreachable, scheduler,
+    this.routing = new Routing(topology, tables, registry, filter, unreachable, scheduler,
         (hop, owner) -> {
           Link via = links.get(hop);
           if (via != null) {

@@ -70,7 +70,7 @@ final class ReplyWait {
 
   /**
    * Waits for {@code reply} to the call sent over {@code link}. Without a timeout of its own: the
-   * call's deadline completes {@code reply} when it passes ({@link Deadlines}).
+   * call's deadline completes {@code reply} when it passes (Deadlines).
    *
    * @param borrowed what {@link #borrow} said for the call
    * @param sent when the call was sent ({@link System#nanoTime})

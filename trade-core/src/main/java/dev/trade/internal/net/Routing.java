@@ -31,9 +31,8 @@ final class Routing {
   private final Tables tables;
   private final Registry registry;
   private final FloodFilter filter;
-  private final RemoteCalls calls;
   private final Consumer<UUID> unreachable;
-  private final Replication.Scheduler scheduler;
+  private final ControlScheduler scheduler;
   private final BiConsumer<UUID, String> askForTable;
   private final Consumer<String> passOnAgain;
   private final long graceNanos;
@@ -55,13 +54,12 @@ final class Routing {
    * @param graceNanos how long states and tables of unreachable containers are kept
    */
   Routing(Topology topology, Tables tables, Registry registry, FloodFilter filter,
-      RemoteCalls calls, Consumer<UUID> unreachable, Replication.Scheduler scheduler,
+      Consumer<UUID> unreachable, ControlScheduler scheduler,
       BiConsumer<UUID, String> askForTable, Consumer<String> passOnAgain, long graceNanos) {
     this.topology = topology;
     this.tables = tables;
     this.registry = registry;
     this.filter = filter;
-    this.calls = calls;
     this.unreachable = unreachable;
     this.scheduler = scheduler;
     this.askForTable = askForTable;
@@ -133,7 +131,6 @@ final class Routing {
     List<String> known = registry.remoteContainers();
     for (UUID gone : before.keySet()) {
       if (!hops.containsKey(gone)) {
-        calls.failTo(gone, "container " + gone + " left or is not reachable any more");
         unreachable.accept(gone);
       }
     }

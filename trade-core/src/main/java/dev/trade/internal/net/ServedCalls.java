@@ -9,7 +9,7 @@ import java.util.concurrent.atomic.AtomicLong;
  * served for a whole tick, or whole frames waiting behind it ({@link #look}), and at once when a
  * served call waits for a remote reply ({@link #releaseReading}). Each move leaves a thread serving
  * its call; {@link #servedElsewhere} counts them, so that a link's calls cannot take threads
- * without bound (see {@link RemoteCalls#MAX_SERVED_PER_LINK}). Safe for concurrent use.
+ * without bound (see RemoteCalls.MAX_SERVED_PER_LINK). Safe for concurrent use.
  */
 final class ServedCalls {
   /** What the current thread serves on a link's reading thread, if anything. */

@@ -7,6 +7,7 @@ import dev.trade.TRADESerializationException;
 import dev.trade.TRADEServiceUnavailableException;
 import dev.trade.TRADETimeoutException;
 import dev.trade.internal.call.Invocation;
+import dev.trade.internal.call.Provider;
 import dev.trade.internal.codec.ByteSink;
 import dev.trade.internal.codec.ByteSource;
 import dev.trade.internal.codec.Codec;
@@ -29,12 +30,12 @@ final class Serving {
 
   private final UUID self;
   private final Codec codec;
-  private final Network.Host host;
+  private final Provider host;
   private final Replies replies;
   private final int maxFrame;
 
   /** @param maxFrame this container's MAXFRAMESIZE */
-  Serving(UUID self, Codec codec, Network.Host host, Replies replies, int maxFrame) {
+  Serving(UUID self, Codec codec, Provider host, Replies replies, int maxFrame) {
     this.self = self;
     this.codec = codec;
     this.host = host;

@@ -38,8 +38,7 @@ class FloodForwardingTest {
   private final AtomicInteger scheduled = new AtomicInteger();
   private final LoopbackLinks loopback = new LoopbackLinks();
   private final Replication replication = new Replication(self, new Registry(self.toString(), "x", "host"),
-      codec, links, new RemoteCalls(self, codec, container -> null, null, timer, 1 << 20),
-      60_000_000_000L, (task, delay) -> scheduled.incrementAndGet(), container -> { });
+      codec, links, 60_000_000_000L, (task, delay) -> scheduled.incrementAndGet(), container -> { });
 
   @AfterEach
   void close() throws IOException {

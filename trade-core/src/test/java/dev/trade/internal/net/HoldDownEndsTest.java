@@ -4,10 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import dev.trade.internal.codec.AllowList;
-import dev.trade.internal.codec.Codec;
-import dev.trade.internal.codec.InfoBinding;
-import dev.trade.internal.codec.Limits;
 import dev.trade.internal.registry.Registry;
 import dev.trade.testing.Await;
 import java.time.Duration;
@@ -37,7 +33,6 @@ class HoldDownEndsTest {
   private final String n = UUID.randomUUID().toString();
   private final String b = UUID.randomUUID().toString();
   private final String c = UUID.randomUUID().toString();
-  private final Codec codec = new Codec(AllowList.withDefaults(), Limits.DEFAULT, InfoBinding.NONE);
   /** The control thread: routing and topology are used on it alone, as in a container. */
   private final ScheduledExecutorService control = Executors.newSingleThreadScheduledExecutor();
   private final Topology topology = new Topology(self.toString(), HOLD_DOWN);
@@ -45,7 +40,7 @@ class HoldDownEndsTest {
   private final Tables tables = new Tables(registry, LONG);
   private final Routing routing = new Routing(topology, tables, registry,
       new FloodFilter(topology, registry, tables),
-      new RemoteCalls(self, codec, container -> null, null, control, 1 << 20), gone -> { },
+      gone -> { },
       (task, delayNanos) -> control.schedule(task, delayNanos, TimeUnit.NANOSECONDS),
       (hop, owner) -> { }, owner -> { }, LONG);
 

@@ -3,10 +3,6 @@ package dev.trade.internal.net;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 
-import dev.trade.internal.codec.AllowList;
-import dev.trade.internal.codec.Codec;
-import dev.trade.internal.codec.InfoBinding;
-import dev.trade.internal.codec.Limits;
 import dev.trade.internal.registry.Registry;
 import java.util.List;
 import java.util.Set;
@@ -28,7 +24,6 @@ class RegainedStatesTest {
   private final UUID self = UUID.randomUUID();
   private final String b = UUID.randomUUID().toString();
   private final String c = UUID.randomUUID().toString();
-  private final Codec codec = new Codec(AllowList.withDefaults(), Limits.DEFAULT, InfoBinding.NONE);
   private final ScheduledExecutorService timer = Executors.newSingleThreadScheduledExecutor();
   private final Topology topology = new Topology(self.toString(), LONG);
   private final Registry registry = new Registry(self.toString(), "self", "host");
@@ -36,7 +31,7 @@ class RegainedStatesTest {
   private final List<String> passedOn = new CopyOnWriteArrayList<>();
   private final Routing routing = new Routing(topology, tables, registry,
       new FloodFilter(topology, registry, tables),
-      new RemoteCalls(self, codec, container -> null, null, timer, 1 << 20), gone -> { },
+      gone -> { },
       (task, delayNanos) -> { }, (hop, owner) -> { }, passedOn::add, LONG);
 
   @AfterEach
