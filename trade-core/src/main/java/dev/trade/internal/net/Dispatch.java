@@ -1,5 +1,11 @@
 package dev.trade.internal.net;
 
+import dev.trade.internal.net.link.Frames;
+import dev.trade.internal.net.link.Link;
+import dev.trade.internal.net.link.LinkHandler;
+import dev.trade.internal.net.link.Wire;
+import dev.trade.internal.net.mesh.Replication;
+import dev.trade.internal.net.remote.RemoteCalls;
 import java.io.IOException;
 
 /**

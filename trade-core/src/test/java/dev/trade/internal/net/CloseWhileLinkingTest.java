@@ -3,6 +3,7 @@ package dev.trade.internal.net;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import dev.trade.TRADEContainer;
+import dev.trade.internal.net.link.Wire;
 import dev.trade.testing.Await;
 import java.io.IOException;
 import java.net.InetSocketAddress;

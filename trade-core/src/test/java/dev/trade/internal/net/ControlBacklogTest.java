@@ -2,6 +2,7 @@ package dev.trade.internal.net;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
+import dev.trade.internal.net.link.ControlBacklog;
 import org.junit.jupiter.api.Test;
 
 class ControlBacklogTest {

@@ -7,6 +7,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trade.TRADEContainer;
 import dev.trade.TRADEService;
+import dev.trade.internal.net.link.Wire;
+import dev.trade.internal.net.mesh.Digest;
+import dev.trade.internal.net.mesh.Topology;
 import dev.trade.internal.registry.Table;
 import dev.trade.testing.Await;
 import java.net.InetSocketAddress;

@@ -7,6 +7,7 @@ import dev.trade.TRADEContainer;
 import dev.trade.TRADEException;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
+import dev.trade.internal.net.link.Wire;
 import dev.trade.testing.Await;
 import java.net.InetSocketAddress;
 import java.time.Duration;

@@ -8,6 +8,7 @@ import dev.trade.TRADEContainer;
 import dev.trade.TRADEException;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
+import dev.trade.internal.net.link.LinkSwaps;
 import dev.trade.testing.Await;
 import java.io.IOException;
 import java.net.InetAddress;
