@@ -7,12 +7,12 @@ import dev.trade.internal.call.Provider;
 import dev.trade.internal.codec.Codec;
 import dev.trade.internal.config.PeerAddress;
 import dev.trade.internal.config.Settings;
-import dev.trade.internal.net.join.DiscoverySwitches;
+import dev.trade.internal.net.join.DiscoveryController;
 import dev.trade.internal.net.link.Connector;
 import dev.trade.internal.net.link.Handshake;
 import dev.trade.internal.net.link.Heartbeat;
 import dev.trade.internal.net.link.Link;
-import dev.trade.internal.net.link.LinkSwaps;
+import dev.trade.internal.net.link.LinkReferee;
 import dev.trade.internal.net.link.ReadWatch;
 import dev.trade.internal.net.mesh.Replication;
 import dev.trade.internal.net.remote.RemoteCalls;
@@ -59,9 +59,9 @@ public final class Network implements AutoCloseable {
   private final RemoteCalls calls;
   private final Replication replication;
   private final ReadWatch readWatch;
-  private final Dispatch dispatch;
-  private final DiscoverySwitches discovery;
-  private final LinkSwaps swaps;
+  private final FrameDispatcher dispatch;
+  private final DiscoveryController discovery;
+  private final LinkReferee swaps;
   private final Map<UUID, Link> links = new ConcurrentHashMap<>();
   /**
    * Every link whose reader runs, registered in {@link #links} or not yet: heartbeats and the
@@ -95,8 +95,8 @@ public final class Network implements AutoCloseable {
         this::onControlAfter, this::unreachable);
     // The frames of a burst of state changes leave together (one system call per link).
     this.control = new ControlExecutor(daemon("trade-control-" + name), replication::flushQueued);
-    this.dispatch = new Dispatch(calls, replication, this,
-        Dispatch.backlogLimit(settings.maxFrameSize()));
+    this.dispatch = new FrameDispatcher(calls, replication, this,
+        FrameDispatcher.backlogLimit(settings.maxFrameSize()));
     if (settings.defaultCredentialsBeyondThisHost()) {
       LOG.log(Level.WARNING, "{0}: CREDENTIALS has its published default value, and this container"
           + " reaches beyond this host: anyone who can reach it can join the system. Give every"
@@ -105,7 +105,7 @@ public final class Network implements AutoCloseable {
     Handshake handshake = new Handshake(new Handshake.Identity(settings.tradeSysId(), self, name,
         host, List.of(), settings.useEncryption(), true, settings.maxFrameSize()),
         settings.credentials());
-    this.swaps = new LinkSwaps(settings.clientSocketTimeout().toNanos(),
+    this.swaps = new LinkReferee(settings.clientSocketTimeout().toNanos(),
         settings.failureTimeout().toNanos(), this::onControlAfter);
     this.connector = new Connector(name, handshake, (int) settings.clientSocketTimeout().toMillis(),
         workers, timer, new Connector.Sink() {
@@ -134,7 +134,7 @@ public final class Network implements AutoCloseable {
             });
           }
         });
-    this.discovery = new DiscoverySwitches(settings, self, name, connector, this::linkedOrLinking,
+    this.discovery = new DiscoveryController(settings, self, name, connector, this::linkedOrLinking,
         replication::reachable, timer, () -> closed);
     registry.addListener(
         (added, removed) -> replication.localChanged(added, removed, this::onControl));
@@ -260,7 +260,7 @@ public final class Network implements AutoCloseable {
       if (initiatedHere) { // kept while the peer is linked, whichever of its links stays
         dialled.put((InetSocketAddress) socket.getRemoteSocketAddress(), peer.containerId());
       }
-      Link drop = LinkSwaps.toClose(links.get(peer.containerId()), link, self);
+      Link drop = LinkReferee.toClose(links.get(peer.containerId()), link, self);
       if (drop != null) {
         LOG.log(Level.DEBUG, "{0}: closed a duplicate link to {1}", name, peer.name());
       }
@@ -340,9 +340,9 @@ public final class Network implements AutoCloseable {
     });
   }
 
-  /** Takes a held loss of the link to {@code peer} now, if it is still held and due (LinkSwaps). */
+  /** Takes a held loss of the link to {@code peer} now, if it is still held and due (LinkReferee). */
   private void settle(UUID peer) {
-    LinkSwaps.Held h = swaps.settle(peer, links.get(peer), System.nanoTime());
+    LinkReferee.Held h = swaps.settle(peer, links.get(peer), System.nanoTime());
     if (h != null) {
       lost(h.link(), h.reason());
     }
@@ -351,7 +351,7 @@ public final class Network implements AutoCloseable {
   private void lost(Link link, String reason) {
     if (links.remove(link.peerId, link)) {
       dialled.values().removeIf(link.peerId::equals);
-      boolean orderly = closed || reason.equals(Dispatch.GOODBYE);
+      boolean orderly = closed || reason.equals(FrameDispatcher.GOODBYE);
       LOG.log(orderly ? Level.DEBUG : Level.INFO, "{0}: link to {1} closed: {2}", name,
           link.peerName, reason);
       calls.failVia(link.peerId, "the connection to " + link.peerName + " was lost ("

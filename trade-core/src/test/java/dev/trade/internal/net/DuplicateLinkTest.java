@@ -14,7 +14,7 @@ import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.codec.Limits;
 import dev.trade.internal.net.link.Frames;
 import dev.trade.internal.net.link.Handshake;
-import dev.trade.internal.net.link.LinkSwaps;
+import dev.trade.internal.net.link.LinkReferee;
 import dev.trade.internal.net.link.Wire;
 import dev.trade.internal.net.remote.RemoteCalls;
 import dev.trade.testing.Await;
@@ -244,15 +244,15 @@ class DuplicateLinkTest {
     UUID small = new UUID(0, 1);
     UUID large = new UUID(-1, -1); // the largest as unsigned bytes
     // Dialled by both: the link the smaller id dialled, whatever the dial numbers.
-    assertTrue(LinkSwaps.keepsAdded(large, 9, small, 1));
-    assertFalse(LinkSwaps.keepsAdded(small, 1, large, 9));
+    assertTrue(LinkReferee.keepsAdded(large, 9, small, 1));
+    assertFalse(LinkReferee.keepsAdded(small, 1, large, 9));
     // Dialled by one: the one it dialled later.
-    assertTrue(LinkSwaps.keepsAdded(small, 1, small, 2));
-    assertFalse(LinkSwaps.keepsAdded(small, 2, small, 1));
+    assertTrue(LinkReferee.keepsAdded(small, 1, small, 2));
+    assertFalse(LinkReferee.keepsAdded(small, 2, small, 1));
     // A dialler that did not number its links: the one added last.
-    assertTrue(LinkSwaps.keepsAdded(small, 0, small, 0));
-    assertTrue(LinkSwaps.keepsAdded(small, 5, small, 0));
-    assertTrue(LinkSwaps.keepsAdded(small, 0, small, 5));
+    assertTrue(LinkReferee.keepsAdded(small, 0, small, 0));
+    assertTrue(LinkReferee.keepsAdded(small, 5, small, 0));
+    assertTrue(LinkReferee.keepsAdded(small, 0, small, 5));
   }
 
   /** Reads what the container sent over a link until its GOODBYE. */

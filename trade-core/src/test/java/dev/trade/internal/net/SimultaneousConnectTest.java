@@ -8,7 +8,7 @@ import dev.trade.TRADEContainer;
 import dev.trade.TRADEException;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
-import dev.trade.internal.net.link.LinkSwaps;
+import dev.trade.internal.net.link.LinkReferee;
 import dev.trade.testing.Await;
 import java.io.IOException;
 import java.net.InetAddress;
@@ -92,11 +92,11 @@ class SimultaneousConnectTest {
     UUID low = UUID.fromString("7fffffff-ffff-ffff-ffff-ffffffffffff");
     UUID high = UUID.fromString("80000000-0000-0000-0000-000000000000");
     assertTrue(low.compareTo(high) > 0);
-    assertTrue(LinkSwaps.compareIds(low, high) < 0);
-    assertTrue(LinkSwaps.compareIds(high, low) > 0);
+    assertTrue(LinkReferee.compareIds(low, high) < 0);
+    assertTrue(LinkReferee.compareIds(high, low) > 0);
     UUID lowTail = UUID.fromString("00000000-0000-0000-7fff-ffffffffffff");
     UUID highTail = UUID.fromString("00000000-0000-0000-8000-000000000000");
-    assertTrue(LinkSwaps.compareIds(lowTail, highTail) < 0);
-    assertEquals(0, LinkSwaps.compareIds(low, UUID.fromString(low.toString())));
+    assertTrue(LinkReferee.compareIds(lowTail, highTail) < 0);
+    assertEquals(0, LinkReferee.compareIds(low, UUID.fromString(low.toString())));
   }
 }

@@ -5,7 +5,7 @@ import dev.trade.internal.config.Settings;
 import dev.trade.internal.discovery.Announcement;
 import dev.trade.internal.discovery.Discovery;
 import dev.trade.internal.net.link.Connector;
-import dev.trade.internal.net.link.LinkSwaps;
+import dev.trade.internal.net.link.LinkReferee;
 import java.io.IOException;
 import java.lang.System.Logger.Level;
 import java.lang.System.Logger;
@@ -351,7 +351,7 @@ final class Finder implements AutoCloseable {
    * "left" and "joined").
    */
   static boolean dialsAtOnce(UUID self, UUID peer, Collection<UUID> known) {
-    if (LinkSwaps.compareIds(self, peer) < 0) {
+    if (LinkReferee.compareIds(self, peer) < 0) {
       return true;
     }
     Set<UUID> members = new HashSet<>(known);

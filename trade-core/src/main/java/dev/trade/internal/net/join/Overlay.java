@@ -1,6 +1,6 @@
 package dev.trade.internal.net.join;
 
-import dev.trade.internal.net.link.LinkSwaps;
+import dev.trade.internal.net.link.LinkReferee;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.Collections;
@@ -15,7 +15,7 @@ import java.util.UUID;
  *
  * <p>Up to {@link #FULL_MESH_MAX} containers (this one included), each dials all the others, so
  * that every call takes one hop. Above that, the known containers form a ring ordered by id
- * ({@link LinkSwaps#compareIds}, the order every implementation computes the same way), and each
+ * ({@link LinkReferee#compareIds}, the order every implementation computes the same way), and each
  * container dials its two successors on the ring plus one "finger" in every other interval of
  * the id space ahead of it: [½, 1), [⅛, ¼), [1/32, 1/16) ... of the id space, the odd ones of
  * ⌈log₂ n⌉ such halving intervals. That is at most ⌈⌈log₂ n⌉ / 2⌉ + 2 dialled links per container,
@@ -219,7 +219,7 @@ final class Overlay {
 
   /** The position of the first container at or after {@code point}, cyclically. */
   private static int successorOf(List<UUID> ring, UUID point) {
-    int i = Collections.binarySearch(ring, point, LinkSwaps::compareIds);
+    int i = Collections.binarySearch(ring, point, LinkReferee::compareIds);
     int at = i >= 0 ? i : -i - 1;
     return at == ring.size() ? 0 : at;
   }
@@ -229,7 +229,7 @@ final class Overlay {
     Set<UUID> all = new HashSet<>(members);
     all.add(self);
     List<UUID> ring = new ArrayList<>(all);
-    ring.sort(LinkSwaps::compareIds);
+    ring.sort(LinkReferee::compareIds);
     return ring;
   }
 }

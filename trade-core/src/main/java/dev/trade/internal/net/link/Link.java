@@ -25,7 +25,7 @@ public final class Link {
    * small call frames per system call.
    */
   static final int BUFFER = 8 * 1024;
-  /** The GOODBYE frame: the sender is closing, or done with this link (see LinkSwaps). */
+  /** The GOODBYE frame: the sender is closing, or done with this link (see LinkReferee). */
   static final byte[] GOODBYE = Frames.finish(Frames.start(Wire.GOODBYE, 0));
 
   public final UUID peerId;

@@ -21,7 +21,7 @@ final class FloodFilter {
 
   private final Topology topology;
   private final Registry registry;
-  private final Tables tables;
+  private final TableKeeper tables;
   /** The newest link-state version of each owner that a reader has queued. */
   private final Map<String, Long> queuedLinks = new ConcurrentHashMap<>();
   /** The newest TABLE version of each owner that a reader has queued. */
@@ -40,7 +40,7 @@ final class FloodFilter {
     }
   }
 
-  FloodFilter(Topology topology, Registry registry, Tables tables) {
+  FloodFilter(Topology topology, Registry registry, TableKeeper tables) {
     this.topology = topology;
     this.registry = registry;
     this.tables = tables;
@@ -51,7 +51,7 @@ final class FloodFilter {
    * read only during the call) that came over link {@code from} (compared by
    * identity) is a copy of a version applied here already, or queued
    * already from another link (a DELTA: a TABLE at that version or later is queued). A TABLE that
-   * passes is kept on the control thread, listed or waiting for a route ({@link Tables}), so a
+   * passes is kept on the control thread, listed or waiting for a route ({@link TableKeeper}), so a
    * copy of it is never needed again; a DELTA that passes is not counted, since one that does not
    * follow makes the control thread ask for the whole TABLE at that version.
    */

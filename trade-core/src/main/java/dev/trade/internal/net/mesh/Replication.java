@@ -25,8 +25,8 @@ import java.util.function.Consumer;
  * Keeps every container's view of the system in step: link states (for routing) and service
  * tables, each versioned by its owner and flooded over all links. A frame that changes nothing here
  * (a version already known) is not passed on, so floods end. A new neighbour gets what it lacks
- * ({@link Digest}), or everything if it does not exchange digests. Tables of containers without a
- * route from here wait until they have one ({@link Tables}).
+ * ({@link Digest}), or everything if it does not exchange digests. TableKeeper of containers without a
+ * route from here wait until they have one ({@link TableKeeper}).
  *
  * <p>Everything but {@link #nextHop} and {@link #localChanged} runs on the network's control thread.
  */
@@ -58,7 +58,7 @@ public final class Replication {
   private final FloodFilter filter;
   /** Links with frames queued by {@link #send} and not written yet. */
   private final Set<Link> queued = new LinkedHashSet<>();
-  private final Tables tables;
+  private final TableKeeper tables;
   private final Routing routing;
 
   /**
@@ -75,7 +75,7 @@ public final class Replication {
     this.tableCodec = tableCodec;
     this.links = links;
     this.topology = new Topology(selfId, holdDownNanos);
-    this.tables = new Tables(registry, STATE_GRACE_NANOS);
+    this.tables = new TableKeeper(registry, STATE_GRACE_NANOS);
     this.filter = new FloodFilter(topology, registry, tables);
     this.routing = new Routing(topology, tables, registry, filter, unreachable, scheduler,
         (hop, owner) -> {

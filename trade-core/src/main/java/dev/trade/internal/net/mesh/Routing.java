@@ -29,7 +29,7 @@ final class Routing {
   private static final long PRUNE_GAP_NANOS = 1_000_000_000L;
 
   private final Topology topology;
-  private final Tables tables;
+  private final TableKeeper tables;
   private final Registry registry;
   private final FloodFilter filter;
   private final Consumer<UUID> unreachable;
@@ -54,7 +54,7 @@ final class Routing {
    *     {@link Topology#statesToShare})
    * @param graceNanos how long states and tables of unreachable containers are kept
    */
-  Routing(Topology topology, Tables tables, Registry registry, FloodFilter filter,
+  Routing(Topology topology, TableKeeper tables, Registry registry, FloodFilter filter,
       Consumer<UUID> unreachable, ControlScheduler scheduler,
       BiConsumer<UUID, String> askForTable, Consumer<String> passOnAgain, long graceNanos) {
     this.topology = topology;

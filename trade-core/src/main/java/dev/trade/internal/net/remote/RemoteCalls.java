@@ -34,7 +34,7 @@ import java.util.function.Predicate;
 /**
  * Remote calls over links: the calling side (request ids, pending replies, deadlines), and
  * forwarding of calls and replies between containers that have no direct link. The providing side
- * is {@link Serving}; replies find their way back to the caller through {@link Replies}.
+ * is {@link CallServer}; replies find their way back to the caller through {@link ReplySender}.
  *
  * <p>A link's reading thread serves the calls it reads and completes the futures of replies; a
  * {@link ReadWatch} keeps the link read while a call takes long, so one slow service never stalls
@@ -78,8 +78,8 @@ public final class RemoteCalls {
   private final UUID self;
   private final Codec codec;
   private final Router router;
-  private final Replies replies;
-  private final Serving serving;
+  private final ReplySender replies;
+  private final CallServer serving;
   private final int maxFrame;
   private final AtomicLong nextId = new AtomicLong();
   private final Map<Long, Pending> pending = new ConcurrentHashMap<>();
@@ -95,8 +95,8 @@ public final class RemoteCalls {
     this.self = self;
     this.codec = codec;
     this.router = router;
-    this.replies = new Replies(self, router, timer, maxFrame);
-    this.serving = new Serving(self, codec, host, replies, maxFrame);
+    this.replies = new ReplySender(self, router, timer, maxFrame);
+    this.serving = new CallServer(self, codec, host, replies, maxFrame);
     this.maxFrame = maxFrame;
     this.deadlines = new Deadlines(timer, pending);
     this.timer = timer;
@@ -125,7 +125,7 @@ public final class RemoteCalls {
     if (!Frames.fits(frame, link.sendLimit)) {
       // Each value fits its limit, but not the call as a whole; the peer would drop the link.
       throw new TRADESerializationException("Cannot call " + d.signature() + ": its arguments need "
-          + (frame.length - 4) + " bytes, more than " + Replies.limitOf(link, maxFrame));
+          + (frame.length - 4) + " bytes, more than " + ReplySender.limitOf(link, maxFrame));
     }
     if (!link.output.hasRoom()) {
       awaitRoom(link, d, deadlineNanos, remaining);
@@ -297,7 +297,7 @@ public final class RemoteCalls {
       // The neighbour that passed the call here has this container on its shortest path to the
       // destination, and this container has it on its own: their link states disagree for the
       // moment (a link just came or went). Passed back, the call would go round until its hops ran
-      // out; it waits for routes to settle instead, as a reply does (Replies#deliver), and the
+      // out; it waits for routes to settle instead, as a reply does (ReplySender#deliver), and the
       // wait counts against its timeout.
       try {
         timer.schedule(() -> forward(from, type, payload, destination, waits + 1), 10 << waits,
@@ -326,7 +326,7 @@ public final class RemoteCalls {
     if (!Frames.fits(frame, next.sendLimit)) {
       replies.reply(from, payload, Wire.FAILED_SERIALIZATION, "Cannot pass the call on from "
           + self + ": it needs " + (frame.length - 4) + " bytes, more than "
-          + Replies.limitOf(next, maxFrame));
+          + ReplySender.limitOf(next, maxFrame));
       return;
     }
     try {

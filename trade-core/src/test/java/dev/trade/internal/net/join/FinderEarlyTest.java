@@ -3,7 +3,7 @@ package dev.trade.internal.net.join;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import dev.trade.internal.net.link.LinkSwaps;
+import dev.trade.internal.net.link.LinkReferee;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
@@ -91,7 +91,7 @@ class FinderEarlyTest {
   /** The two containers after {@code self} on the ring of {@code all}. */
   private static Set<UUID> successors(UUID self, Set<UUID> all) {
     List<UUID> ring = new ArrayList<>(all);
-    ring.sort(LinkSwaps::compareIds);
+    ring.sort(LinkReferee::compareIds);
     int at = ring.indexOf(self);
     return Set.of(ring.get((at + 1) % ring.size()), ring.get((at + 2) % ring.size()));
   }

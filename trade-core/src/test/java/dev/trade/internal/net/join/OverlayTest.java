@@ -4,7 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import dev.trade.internal.net.link.LinkSwaps;
+import dev.trade.internal.net.link.LinkReferee;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Collections;
@@ -252,18 +252,18 @@ class OverlayTest {
   @Test
   void aLinkedContainerStaysAFingerWhenOthersJoin() {
     List<UUID> members = new ArrayList<>(ids(20, 31));
-    members.sort(LinkSwaps::compareIds);
+    members.sort(LinkReferee::compareIds);
     UUID self = members.get(0);
     Set<UUID> chosen = Overlay.chosen(self, members, Set.of());
     List<UUID> small = new ArrayList<>(members);
-    small.sort(LinkSwaps::compareIds);
+    small.sort(LinkReferee::compareIds);
     chosen.remove(small.get(1)); // self's successors then: not fingers
     chosen.remove(small.get(2));
     List<UUID> grown = new ArrayList<>(members);
     grown.addAll(ids(20, 32));
     Set<UUID> again = Overlay.chosen(self, grown, chosen);
     List<UUID> ring = new ArrayList<>(grown);
-    ring.sort(LinkSwaps::compareIds);
+    ring.sort(LinkReferee::compareIds);
     int at = ring.indexOf(self);
     Set<UUID> successors = Set.of(ring.get((at + 1) % 40), ring.get((at + 2) % 40));
     for (UUID c : chosen) {
@@ -279,7 +279,7 @@ class OverlayTest {
   void theRingFormsAgainWhenAContainerLeaves() {
     List<UUID> members = ids(50, 11);
     List<UUID> ring = new ArrayList<>(members);
-    ring.sort(LinkSwaps::compareIds);
+    ring.sort(LinkReferee::compareIds);
     UUID before = ring.get(9);
     UUID gone = ring.get(10);
     UUID after = ring.get(11);

@@ -21,7 +21,7 @@ import org.junit.jupiter.api.Test;
 class FloodFilterTest {
   private final Topology topology = new Topology("me", TimeUnit.SECONDS.toNanos(60));
   private final Registry registry = new Registry("me", "me", "host");
-  private final Tables tables = new Tables(registry, TimeUnit.SECONDS.toNanos(60));
+  private final TableKeeper tables = new TableKeeper(registry, TimeUnit.SECONDS.toNanos(60));
   private final FloodFilter filter = new FloodFilter(topology, registry, tables);
   private final Codec codec = new Codec(AllowList.withDefaults(), Limits.DEFAULT, InfoBinding.NONE);
   /** Stand-ins for links: the filter compares them by identity. */

@@ -37,7 +37,7 @@ class HoldDownEndsTest {
   private final ScheduledExecutorService control = Executors.newSingleThreadScheduledExecutor();
   private final Topology topology = new Topology(self.toString(), HOLD_DOWN);
   private final Registry registry = new Registry(self.toString(), "self", "host");
-  private final Tables tables = new Tables(registry, LONG);
+  private final TableKeeper tables = new TableKeeper(registry, LONG);
   private final Routing routing = new Routing(topology, tables, registry,
       new FloodFilter(topology, registry, tables),
       gone -> { },

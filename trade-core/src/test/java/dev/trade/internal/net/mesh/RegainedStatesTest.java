@@ -27,7 +27,7 @@ class RegainedStatesTest {
   private final ScheduledExecutorService timer = Executors.newSingleThreadScheduledExecutor();
   private final Topology topology = new Topology(self.toString(), LONG);
   private final Registry registry = new Registry(self.toString(), "self", "host");
-  private final Tables tables = new Tables(registry, LONG);
+  private final TableKeeper tables = new TableKeeper(registry, LONG);
   private final List<String> passedOn = new CopyOnWriteArrayList<>();
   private final Routing routing = new Routing(topology, tables, registry,
       new FloodFilter(topology, registry, tables),

@@ -47,7 +47,7 @@ class ReplyWayBackTest {
     InputStream[] atRoute = new InputStream[1];
     Link cameBy = loopback.link(UUID.randomUUID(), "came-by", atCameBy);
     Link route = loopback.link(UUID.randomUUID(), "route", atRoute);
-    Replies replies = new Replies(self, container -> container.equals(caller) ? route : null, timer,
+    ReplySender replies = new ReplySender(self, container -> container.equals(caller) ? route : null, timer,
         1 << 20);
     byte[] call = call();
     byte[] frame = Frames.finish(replies.replyStart(call, Wire.OK));

@@ -12,10 +12,10 @@ import java.util.UUID;
 import org.junit.jupiter.api.Test;
 
 /** When a lost link's loss is held for its replacement, and when it is taken after all. */
-class LinkSwapsTest {
+class LinkRefereeTest {
   private static final long HOLD = 1_000_000_000L;
   private final UUID peer = UUID.randomUUID();
-  private final LinkSwaps swaps = new LinkSwaps(HOLD, HOLD, (task, delay) -> {
+  private final LinkReferee swaps = new LinkReferee(HOLD, HOLD, (task, delay) -> {
     throw new AssertionError("nothing is retired here");
   });
 
@@ -44,7 +44,7 @@ class LinkSwapsTest {
     try (LoopbackLinks links = new LoopbackLinks()) {
       Link old = held(links);
       swaps.ended(peer);
-      LinkSwaps.Held h = swaps.settle(peer, old, 1);
+      LinkReferee.Held h = swaps.settle(peer, old, 1);
       assertSame(old, h.link());
       assertEquals("closed by p", h.reason());
     }

@@ -28,17 +28,17 @@ import java.util.concurrent.TimeUnit;
  * (docs/protocol.md, "CALL" and "REPLY"). Runs on whichever thread serves the call; stateless
  * beyond what it is made with, so safe for concurrent use.
  */
-final class Serving {
+final class CallServer {
   private static final Logger LOG = System.getLogger("dev.trade.net");
 
   private final UUID self;
   private final Codec codec;
   private final Provider host;
-  private final Replies replies;
+  private final ReplySender replies;
   private final int maxFrame;
 
   /** @param maxFrame this container's MAXFRAMESIZE */
-  Serving(UUID self, Codec codec, Provider host, Replies replies, int maxFrame) {
+  CallServer(UUID self, Codec codec, Provider host, ReplySender replies, int maxFrame) {
     this.self = self;
     this.codec = codec;
     this.host = host;
@@ -50,7 +50,7 @@ final class Serving {
   void serve(Link from, byte[] payload) {
     ByteSource in = ByteSource.of(payload, Frames.ROUTING, payload.length - Frames.ROUTING);
     try {
-      in.readLong(); // request id, echoed by Replies.replyStart
+      in.readLong(); // request id, echoed by ReplySender.replyStart
       long serviceId = in.readLong();
       int timeoutMs = in.readInt();
       int count = in.readVarUInt();

@@ -22,7 +22,7 @@ import java.util.concurrent.ConcurrentHashMap;
  *
  * <p>{@link #begun} is safe on any thread; everything else runs on the network's control thread.
  */
-public final class LinkSwaps {
+public final class LinkReferee {
   /** A lost link, why, and until when (nanoTime) its loss may be held. */
   public record Held(Link link, String reason, long until) {}
 
@@ -42,7 +42,7 @@ public final class LinkSwaps {
    * @param retireNanos how long a retired link waits for its peer to close it (FAILURETIMEOUT)
    * @param later runs a task on the control thread after a delay
    */
-  public LinkSwaps(long holdNanos, long retireNanos, ControlScheduler later) {
+  public LinkReferee(long holdNanos, long retireNanos, ControlScheduler later) {
     this.holdNanos = holdNanos;
     this.retireNanos = retireNanos;
     this.later = later;

@@ -21,7 +21,7 @@ import java.util.concurrent.TimeUnit;
  * <p>Safe for concurrent use: it holds no state of its own beyond what it is made with; a reply
  * that finds no route is tried again on the timer.
  */
-public final class Replies {
+public final class ReplySender {
   private static final Logger LOG = System.getLogger("dev.trade.net");
 
   private final UUID self;
@@ -30,7 +30,7 @@ public final class Replies {
   private final int maxFrame;
 
   /** @param maxFrame the largest frame (after its length field) that peers accept: MAXFRAMESIZE */
-  public Replies(UUID self, RemoteCalls.Router router, ScheduledExecutorService timer, int maxFrame) {
+  public ReplySender(UUID self, RemoteCalls.Router router, ScheduledExecutorService timer, int maxFrame) {
     this.self = self;
     this.router = router;
     this.timer = timer;

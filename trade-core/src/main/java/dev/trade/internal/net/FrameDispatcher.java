@@ -14,7 +14,7 @@ import java.io.IOException;
  * (copies that are already stale are dropped here, before they queue), heartbeats only count as
  * life. Safe for concurrent use.
  */
-final class Dispatch implements LinkHandler {
+final class FrameDispatcher implements LinkHandler {
   /** Why a link closed when its peer said GOODBYE: an orderly close. */
   static final String GOODBYE = "said goodbye";
 
@@ -27,7 +27,7 @@ final class Dispatch implements LinkHandler {
    * @param backlogLimit how many bytes of one link's replication frames may wait for the control
    *     thread (see {@link ControlBacklog}); a link that sends more is closed
    */
-  Dispatch(RemoteCalls calls, Replication replication, Network network, long backlogLimit) {
+  FrameDispatcher(RemoteCalls calls, Replication replication, Network network, long backlogLimit) {
     this.calls = calls;
     this.replication = replication;
     this.network = network;

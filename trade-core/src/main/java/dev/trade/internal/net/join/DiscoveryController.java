@@ -23,7 +23,7 @@ import java.util.function.Supplier;
  * <p>Safe for concurrent use: listening and the finder are set up, switched and closed under
  * this object's lock.
  */
-public final class DiscoverySwitches implements AutoCloseable {
+public final class DiscoveryController implements AutoCloseable {
   private final Settings settings;
   private final UUID self;
   private final String name;
@@ -41,7 +41,7 @@ public final class DiscoverySwitches implements AutoCloseable {
    * @param reachable the other containers routing reaches now
    * @param closed whether the container has closed (then no finder is made any more)
    */
-  public DiscoverySwitches(Settings settings, UUID self, String name, Connector connector,
+  public DiscoveryController(Settings settings, UUID self, String name, Connector connector,
       Predicate<UUID> linked, Supplier<Set<UUID>> reachable, ScheduledExecutorService timer,
       BooleanSupplier closed) {
     this.settings = settings;

@@ -3,8 +3,8 @@ package dev.trade.internal.net.mesh;
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
 import dev.trade.internal.registry.Table;
-import java.lang.System.Logger;
 import java.lang.System.Logger.Level;
+import java.lang.System.Logger;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.Iterator;
@@ -25,7 +25,7 @@ import java.util.Map;
  *
  * <p>Not thread-safe: the network's control thread owns it.
  */
-final class Tables {
+final class TableKeeper {
   private static final Logger LOG = System.getLogger("dev.trade.net");
 
   private record Waiting(Table table, long since) {}
@@ -34,7 +34,7 @@ final class Tables {
   private final Map<String, Waiting> waiting = new HashMap<>();
   private final long graceNanos;
 
-  Tables(Registry registry, long graceNanos) {
+  TableKeeper(Registry registry, long graceNanos) {
     this.registry = registry;
     this.graceNanos = graceNanos;
   }
