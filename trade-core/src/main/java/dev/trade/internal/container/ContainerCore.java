@@ -160,7 +160,7 @@ public final class ContainerCore implements ServiceCaller {
   public void setDiscovery(boolean on) {
     if (on || network != null) {
       try {
-        network().setDiscovery(on);
+        network().discovery().setDiscovery(on);
       } catch (IOException e) {
         throw new UncheckedIOException("cannot start discovery: " + e.getMessage(), e);
       }
@@ -171,7 +171,7 @@ public final class ContainerCore implements ServiceCaller {
   public void setBroadcast(boolean on) {
     if (on || network != null) {
       try {
-        network().setBroadcast(on);
+        network().discovery().setBroadcast(on);
       } catch (IOException e) {
         throw new UncheckedIOException("cannot start announcing: " + e.getMessage(), e);
       }
@@ -180,12 +180,12 @@ public final class ContainerCore implements ServiceCaller {
 
   public boolean isDiscovering() {
     Network n = network;
-    return n != null && n.isDiscovering();
+    return n != null && n.discovery().isDiscovering();
   }
 
   public boolean isBroadcasting() {
     Network n = network;
-    return n != null && n.isBroadcasting();
+    return n != null && n.discovery().isBroadcasting();
   }
 
   /** The addresses this container accepts connections on (empty without networking). */

@@ -159,32 +159,9 @@ public final class Network implements AutoCloseable {
     }
   }
 
-  /**
-   * Turns multicast discovery (listening for announcements and connecting) on or off at run time.
-   *
-   * @throws IOException if discovery has to start and cannot open its socket
-   */
-  public void setDiscovery(boolean on) throws IOException {
-    discovery.setDiscovery(on);
-  }
-
-  /**
-   * Turns announcing this container on or off at run time (then accepting connections, if not yet).
-   *
-   * @throws IOException if a listen socket or the discovery socket cannot be opened
-   */
-  public void setBroadcast(boolean on) throws IOException {
-    discovery.setBroadcast(on);
-  }
-
-  /** Whether this container listens for announcements. */
-  public boolean isDiscovering() {
-    return discovery.isDiscovering();
-  }
-
-  /** Whether this container announces itself. */
-  public boolean isBroadcasting() {
-    return discovery.isBroadcasting();
+  /** Announcing, discovery and listening, and their switches. */
+  public DiscoveryController discovery() {
+    return discovery;
   }
 
   /**
@@ -199,18 +176,6 @@ public final class Network implements AutoCloseable {
   /** The addresses this container accepts connections on. */
   public List<InetSocketAddress> listenAddresses() {
     return connector.listening();
-  }
-
-  /** Connects to a container at {@code address} once (an address heard from discovery). */
-  public void connect(InetSocketAddress address) {
-    if (!closed) {
-      connector.connectOnce(address);
-    }
-  }
-
-  /** Keeps a link to {@code address}, as CONNECTCONTAINERS does. */
-  public void keepConnected(InetSocketAddress address) {
-    connector.keepConnected(address);
   }
 
   /** Ids of the containers this one has a direct link to. */
@@ -228,6 +193,10 @@ public final class Network implements AutoCloseable {
 
   int dialledAddresses() { // for tests
     return dialled.size();
+  }
+
+  void connect(InetSocketAddress address) { // for tests: discovery dials through its finder
+    connector.connectOnce(address);
   }
 
   /** Calls a remote service; see {@code ServiceCaller}. */
