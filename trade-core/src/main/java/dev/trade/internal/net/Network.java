@@ -3,6 +3,7 @@ package dev.trade.internal.net;
 import static dev.trade.internal.net.ControlExecutor.daemon;
 
 import dev.trade.TRADEException;
+import dev.trade.internal.call.CallContext;
 import dev.trade.internal.call.Provider;
 import dev.trade.internal.codec.Codec;
 import dev.trade.internal.config.PeerAddress;
@@ -200,9 +201,9 @@ public final class Network implements AutoCloseable {
   }
 
   /** Calls a remote service; see {@code ServiceCaller}. */
-  public Object call(ServiceDescriptor d, Object[] args, long deadlineNanos, ClassLoader loader)
-      throws TRADEException {
-    return calls.call(d, args, deadlineNanos, loader);
+  public Object call(ServiceDescriptor d, Object[] args, CallContext context, long deadlineNanos,
+      ClassLoader loader) throws TRADEException {
+    return calls.call(d, args, context, deadlineNanos, loader);
   }
 
   private Link nextHop(UUID container) {

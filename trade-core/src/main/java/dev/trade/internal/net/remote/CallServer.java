@@ -6,6 +6,9 @@ import dev.trade.TRADEInvocationException;
 import dev.trade.TRADESerializationException;
 import dev.trade.TRADEServiceUnavailableException;
 import dev.trade.TRADETimeoutException;
+import dev.trade.internal.call.CallContext;
+import dev.trade.internal.call.CallErrors;
+import dev.trade.internal.call.Caller;
 import dev.trade.internal.call.Invocation;
 import dev.trade.internal.call.Provider;
 import dev.trade.internal.codec.ByteSink;
@@ -56,14 +59,14 @@ final class CallServer {
       int count = in.readVarUInt();
       LocalService s = host.local(serviceId);
       if (s == null) {
-        replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer:"
-            + " service " + serviceId + " was deregistered from container " + self);
+        replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, CallErrors.goneText("service "
+            + serviceId + " was deregistered from container " + self));
         return;
       }
       ServiceDescriptor d = s.descriptor();
       if (count != d.parameterTypeNames().size()) {
-        replies.reply(from, payload, Wire.FAILED_BAD_ARGUMENTS, "Service " + d.signature()
-            + " takes " + d.parameterTypeNames().size() + " arguments but got " + count);
+        replies.reply(from, payload, Wire.FAILED_BAD_ARGUMENTS,
+            CallErrors.argumentCount(d, count).getMessage());
         return;
       }
       ClassLoader loader = s.target().getClass().getClassLoader();
@@ -71,8 +74,10 @@ final class CallServer {
       for (int i = 0; i < count; i++) {
         args[i] = codec.read(in, loader == null ? ClassLoader.getSystemClassLoader() : loader);
       }
+      CallContext context = ContextCoding.read(in);
       long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
-      Object result = host.invoke(new Invocation(d, args, deadline));
+      Object result = host.invoke(new Invocation(d, args, deadline,
+          Caller.of(Frames.source(payload)), context));
       ByteSink out = replies.replyStart(payload, Wire.OK);
       try {
         codec.write(result, out);

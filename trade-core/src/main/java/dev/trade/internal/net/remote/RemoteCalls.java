@@ -6,7 +6,8 @@ import dev.trade.TRADEInvocationException;
 import dev.trade.TRADESerializationException;
 import dev.trade.TRADEServiceUnavailableException;
 import dev.trade.TRADETimeoutException;
-import dev.trade.internal.call.LocalInvoker;
+import dev.trade.internal.call.CallContext;
+import dev.trade.internal.call.CallErrors;
 import dev.trade.internal.call.Provider;
 import dev.trade.internal.codec.ByteSink;
 import dev.trade.internal.codec.ByteSource;
@@ -69,9 +70,7 @@ public final class RemoteCalls {
       ServiceDescriptor service, long timeoutNanos) {
     /** What the caller gets when the deadline passed. */
     TRADETimeoutException timedOut() {
-      return new TRADETimeoutException("Service " + service.signature() + " of container "
-          + service.containerName() + " did not answer within "
-          + TimeUnit.NANOSECONDS.toMillis(timeoutNanos) + " ms");
+      return CallErrors.timedOut(service, timeoutNanos, "");
     }
   }
 
@@ -103,8 +102,8 @@ public final class RemoteCalls {
   }
 
   /** Calls a service of another container and waits for its reply until the deadline. */
-  public Object call(ServiceDescriptor d, Object[] args, long deadlineNanos, ClassLoader loader)
-      throws TRADEException {
+  public Object call(ServiceDescriptor d, Object[] args, CallContext context, long deadlineNanos,
+      ClassLoader loader) throws TRADEException {
     UUID destination = containerIds.get(d.containerId());
     if (destination == null) {
       if (containerIds.size() >= MAX_IDS) {
@@ -115,13 +114,14 @@ public final class RemoteCalls {
     }
     Link link = router.nextHop(destination);
     if (link == null) {
-      throw LocalInvoker.unavailable(d, "its container is not reachable");
+      throw CallErrors.gone(d, "its container is not reachable");
     }
     long id = nextId.incrementAndGet();
     long sent = System.nanoTime();
     long remaining = deadlineNanos - sent;
     byte[] frame = callFrame(destination, id, d.serviceId(),
-        (int) Math.min(Integer.MAX_VALUE, Math.max(1, TimeUnit.NANOSECONDS.toMillis(remaining))), args);
+        (int) Math.min(Integer.MAX_VALUE, Math.max(1, TimeUnit.NANOSECONDS.toMillis(remaining))), args,
+        context);
     if (!Frames.fits(frame, link.sendLimit)) {
       // Each value fits its limit, but not the call as a whole; the peer would drop the link.
       throw new TRADESerializationException("Cannot call " + d.signature() + ": its arguments need "
@@ -148,7 +148,7 @@ public final class RemoteCalls {
       sentOk = true;
     } catch (IOException e) {
       pending.remove(id);
-      throw LocalInvoker.unavailable(d, "the connection to its container was lost");
+      throw CallErrors.gone(d, "the connection to its container was lost");
     } finally {
       if (!sentOk) {
         replyWait.abandon(link, borrowed);
@@ -176,9 +176,7 @@ public final class RemoteCalls {
       throws TRADEException {
     try {
       if (!link.output.awaitRoom(deadline, link::isClosed)) {
-        throw new TRADETimeoutException("Service " + d.signature() + " of container "
-            + d.containerName() + " did not answer within " + TimeUnit.NANOSECONDS.toMillis(timeout)
-            + " ms: the call waited all that time to be sent, behind "
+        throw CallErrors.timedOut(d, timeout, ": the call waited all that time to be sent, behind "
             + link.output.queuedBytes() + " bytes that " + link.peerName
             + " takes slower than they are sent");
       }
@@ -191,6 +189,12 @@ public final class RemoteCalls {
   /** A CALL frame (header included) for a service of {@code destination}. */
   public byte[] callFrame(UUID destination, long requestId, long serviceId, int timeoutMs, Object[] args)
       throws TRADESerializationException {
+    return callFrame(destination, requestId, serviceId, timeoutMs, args, CallContext.EMPTY);
+  }
+
+  /** A CALL frame (header included) for a service of {@code destination}, with a context. */
+  public byte[] callFrame(UUID destination, long requestId, long serviceId, int timeoutMs, Object[] args,
+      CallContext context) throws TRADESerializationException {
     ByteSink out = Frames.start(Wire.CALL, 64);
     Frames.writeRouting(out, self, destination, Wire.MAX_HOPS);
     out.writeLong(requestId);
@@ -200,6 +204,7 @@ public final class RemoteCalls {
     for (Object a : args) {
       codec.write(a, out);
     }
+    ContextCoding.write(context, out);
     return Frames.finish(out);
   }
 
@@ -243,8 +248,8 @@ public final class RemoteCalls {
       return from.serveHere(() -> forward(from, Wire.CALL, payload, destination, 0));
     }
     if (from.servedElsewhere() >= MAX_SERVED_PER_LINK) {
-      replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, "Service not available now: container "
-          + self + " serves " + MAX_SERVED_PER_LINK + " calls from this link at once already");
+      replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, CallErrors.notNowText("container "
+          + self + " serves " + MAX_SERVED_PER_LINK + " calls from this link at once already"));
       return true;
     }
     return from.serveHere(() -> serving.serve(from, payload));
@@ -310,17 +315,17 @@ public final class RemoteCalls {
     if (next == null || Frames.hops(payload) <= 1) {
       LOG.log(Level.DEBUG, "dropping frame for unreachable {0}", destination);
       if (type == Wire.CALL) {
-        replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer:"
-            + " container " + destination + " is not reachable from " + self);
+        replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, CallErrors.goneText("container "
+            + destination + " is not reachable from " + self));
       }
       return;
     }
     byte[] frame = Frames.forwarded(type, payload);
     if (!next.output.hasRoom()) {
       // A reading thread must not wait for room: it would stop reading the link the call came on.
-      replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, "Service not available now: the link"
-          + " from " + self + " to " + next.peerName + " holds " + next.output.queuedBytes()
-          + " bytes that it takes slower than they are sent");
+      replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, CallErrors.notNowText("the link from "
+          + self + " to " + next.peerName + " holds " + next.output.queuedBytes()
+          + " bytes that it takes slower than they are sent"));
       return;
     }
     if (!Frames.fits(frame, next.sendLimit)) {
@@ -333,8 +338,8 @@ public final class RemoteCalls {
       next.passOn(frame);
     } catch (IOException e) {
       if (type == Wire.CALL) {
-        replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, "Service not available any longer:"
-            + " the route to container " + destination + " was lost");
+        replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, CallErrors.goneText("the route to container "
+            + destination + " was lost"));
       }
     }
   }
@@ -356,6 +361,6 @@ public final class RemoteCalls {
 
   private void fail(Predicate<Pending> which, String why) {
     pending.values().removeIf(p -> which.test(p) && p.reply.completeExceptionally(
-        new TRADEServiceUnavailableException("Service not available any longer: " + why)));
+        new TRADEServiceUnavailableException(CallErrors.goneText(why))));
   }
 }
