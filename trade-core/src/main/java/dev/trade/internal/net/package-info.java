@@ -21,7 +21,7 @@
  * thread.
  *
  * <p>Layering: {@code link} imports none of its siblings; {@code mesh}, {@code remote} and
- * {@code join} import {@code link} (and {@code join} reads routes from {@code mesh}) but not one
+ * {@code join} import {@code link} but not one
  * another; only this package sees all four.
  */
 package dev.trade.internal.net;
