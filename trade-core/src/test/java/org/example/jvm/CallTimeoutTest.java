@@ -8,10 +8,10 @@ import dev.trade.TRADEContainer;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
 import dev.trade.TRADETimeoutException;
+import dev.trade.testing.Await;
 import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
-import org.example.net.Await;
 import org.junit.jupiter.api.Test;
 
 /**

@@ -10,6 +10,7 @@ import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
 import dev.trade.TRADEServiceUnavailableException;
 import dev.trade.TRADETimeoutException;
+import dev.trade.testing.Await;
 import java.net.InetSocketAddress;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -18,7 +19,6 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
-import org.example.net.Await;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 

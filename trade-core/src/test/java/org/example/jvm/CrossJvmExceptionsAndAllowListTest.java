@@ -13,11 +13,11 @@ import dev.trade.TRADERemoteException;
 import dev.trade.TRADESerializationException;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
+import dev.trade.testing.Await;
 import java.io.IOException;
 import java.util.Arrays;
 import org.example.jvm.RemoteTypes.ArmJammedException;
 import org.example.jvm.RemoteTypes.Pose;
-import org.example.net.Await;
 import org.junit.jupiter.api.Test;
 
 /**

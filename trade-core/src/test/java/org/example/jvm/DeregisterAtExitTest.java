@@ -6,11 +6,11 @@ import dev.trade.TRADEContainer;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
+import dev.trade.testing.Await;
 import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
-import org.example.net.Await;
 import org.junit.jupiter.api.Test;
 
 /**

@@ -5,8 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import dev.trade.TRADEContainer;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
+import dev.trade.testing.Await;
 import java.time.Duration;
-import org.example.net.Await;
 import org.junit.jupiter.api.Test;
 
 /**

@@ -9,6 +9,7 @@ import dev.trade.TRADEContainer;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
 import dev.trade.TRADEServiceUnavailableException;
+import dev.trade.testing.Await;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
@@ -16,7 +17,6 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicLong;
-import org.example.net.Await;
 import org.junit.jupiter.api.Test;
 
 /**

@@ -4,11 +4,11 @@ import dev.trade.TRADE;
 import dev.trade.TRADEException;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
+import dev.trade.testing.Await;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
-import org.example.net.Await;
 
 /**
  * A component as DIARC writes one (TRADE-API.md: {@code DiarcComponent.shutdown()} deregisters from

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import dev.trade.TRADEContainer;
 import dev.trade.TRADEException;
 import dev.trade.TRADEServiceConstraints;
+import dev.trade.testing.Await;
 import java.time.Duration;
 import org.junit.jupiter.api.Test;
 

@@ -7,6 +7,7 @@ import dev.trade.TRADEContainer;
 import dev.trade.TRADEException;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
+import dev.trade.testing.Await;
 import java.time.Duration;
 import java.util.Random;
 import java.util.concurrent.CountDownLatch;

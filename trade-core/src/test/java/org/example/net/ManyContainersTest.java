@@ -9,6 +9,7 @@ import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
 import dev.trade.internal.discovery.LoopbackMulticast;
+import dev.trade.testing.Await;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Collections;

@@ -6,6 +6,7 @@ import dev.trade.TRADEContainer;
 import dev.trade.TRADEException;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.internal.discovery.LoopbackMulticast;
+import dev.trade.testing.Await;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.HashSet;

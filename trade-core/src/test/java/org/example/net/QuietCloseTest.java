@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import dev.trade.TRADEContainer;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.internal.discovery.LoopbackMulticast;
+import dev.trade.testing.Await;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Collections;

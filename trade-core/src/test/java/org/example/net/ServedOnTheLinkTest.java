@@ -7,12 +7,14 @@ import dev.trade.TRADEException;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
+import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.time.Duration;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 
 /**
  * Calls are served on the thread that reads their link; what that must not cost: a service that
@@ -61,16 +63,9 @@ class ServedOnTheLinkTest {
     }
   }
 
-  private final TRADEContainer hub = TRADEContainer.builder().name("hub")
-      .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build();
-  private final TRADEContainer spoke = TRADEContainer.builder().name("spoke")
-      .property("CONNECTCONTAINERS", hub.getServerAddresses().get(0)).build();
-
-  @AfterEach
-  void close() {
-    spoke.close();
-    hub.close();
-  }
+  @RegisterExtension final Hubs net = new Hubs();
+  private final TRADEContainer hub = net.hub("hub");
+  private final TRADEContainer spoke = net.spoke("spoke", hub);
 
   private static TRADEServiceInfo await(TRADEContainer c, String name) throws TRADEException {
     TRADEServiceConstraints constraints = new TRADEServiceConstraints().name(name);

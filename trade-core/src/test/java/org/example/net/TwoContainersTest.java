@@ -13,10 +13,12 @@ import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
 import dev.trade.TRADEServiceUnavailableException;
+import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.time.Duration;
 import java.util.List;
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 
 class TwoContainersTest {
   private static final Duration WAIT = Duration.ofSeconds(10);
@@ -38,16 +40,9 @@ class TwoContainersTest {
     }
   }
 
-  private final TRADEContainer hub = TRADEContainer.builder().name("hub")
-      .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build();
-  private final TRADEContainer spoke = TRADEContainer.builder().name("spoke")
-      .property("CONNECTCONTAINERS", hub.getServerAddresses().get(0)).build();
-
-  @AfterEach
-  void close() {
-    spoke.close();
-    hub.close();
-  }
+  @RegisterExtension final Hubs net = new Hubs();
+  private final TRADEContainer hub = net.hub("hub");
+  private final TRADEContainer spoke = net.spoke("spoke", hub);
 
   private static TRADEServiceInfo await(TRADEContainer c, TRADEServiceConstraints constraints) {
     Await.until(WAIT, () -> !c.getAvailableServices(constraints).isEmpty(), constraints.toString());

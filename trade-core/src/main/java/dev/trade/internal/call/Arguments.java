@@ -41,7 +41,7 @@ public final class Arguments {
   public static Object[] check(ServiceDescriptor d, List<Class<?>> types, Object[] args)
       throws TRADEBadArgumentsException {
     if (args.length != types.size()) {
-      throw countMismatch(d, types.size(), args.length);
+      throw CallErrors.argumentCount(d, args.length);
     }
     Object[] result = args;
     for (int i = 0; i < args.length; i++) {
@@ -70,12 +70,6 @@ public final class Arguments {
 
   // Out of line, as are the other messages: check() runs on every call, and the smaller it is, the
   // more of the call the JIT compiles into one piece.
-  private static TRADEBadArgumentsException countMismatch(ServiceDescriptor d, int expected,
-      int given) {
-    return new TRADEBadArgumentsException("Service " + d.signature() + " takes " + expected
-        + " argument" + (expected == 1 ? "" : "s") + " " + parameterList(d) + " but got " + given);
-  }
-
   private static TRADEBadArgumentsException notA(ServiceDescriptor d, int index, Object v) {
     return bad(d, index, "is a " + v.getClass().getTypeName());
   }
@@ -126,17 +120,6 @@ public final class Arguments {
   }
 
   private static TRADEBadArgumentsException bad(ServiceDescriptor d, int i, String problem) {
-    return new TRADEBadArgumentsException("Argument " + i + " ('" + d.parameterNames().get(i)
-        + "', expected " + d.parameterTypeNames().get(i) + ") " + problem
-        + "\n    for service " + d.signature());
-  }
-
-  private static String parameterList(ServiceDescriptor d) {
-    StringBuilder sb = new StringBuilder("(");
-    for (int i = 0; i < d.parameterNames().size(); i++) {
-      sb.append(i == 0 ? "" : ", ").append(d.parameterTypeNames().get(i)).append(' ')
-          .append(d.parameterNames().get(i));
-    }
-    return sb.append(')').toString();
+    return CallErrors.badArgument(d, i, problem);
   }
 }

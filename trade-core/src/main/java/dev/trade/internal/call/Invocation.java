@@ -3,7 +3,8 @@ package dev.trade.internal.call;
 import dev.trade.internal.registry.ServiceDescriptor;
 
 /**
- * One call on its way through the chain: which service, with which arguments, until when.
+ * One call on its way through the chain: which service, with which arguments, until when, from
+ * whom ({@link Caller}) and with what context ({@link CallContext}).
  * The argument array is owned by the chain: links may replace it (a copy), never mutate the
  * caller's. Not thread-safe: an invocation travels the chain on one thread.
  *
@@ -16,6 +17,8 @@ public final class Invocation {
   private final ServiceDescriptor service;
   private final Object[] args;
   private final long timeoutNanos;
+  private final Caller caller;
+  private final CallContext context;
   private long deadlineNanos;
   private boolean fixed;
 
@@ -24,22 +27,26 @@ public final class Invocation {
    * @param args the arguments, already normalized (never null)
    * @param deadlineNanos {@link System#nanoTime()} value after which the caller stops waiting
    */
-  public Invocation(ServiceDescriptor service, Object[] args, long deadlineNanos) {
-    this(service, args, 0, deadlineNanos, true);
+  public Invocation(ServiceDescriptor service, Object[] args, long deadlineNanos, Caller caller,
+      CallContext context) {
+    this(service, args, 0, deadlineNanos, true, caller, context);
   }
 
   private Invocation(ServiceDescriptor service, Object[] args, long timeoutNanos, long deadlineNanos,
-      boolean fixed) {
+      boolean fixed, Caller caller, CallContext context) {
     this.service = service;
     this.args = args;
     this.timeoutNanos = timeoutNanos;
+    this.caller = caller;
+    this.context = context;
     this.deadlineNanos = deadlineNanos;
     this.fixed = fixed;
   }
 
   /** A call made in this container, whose deadline is {@code timeoutNanos} from when it is asked. */
-  public static Invocation local(ServiceDescriptor service, Object[] args, long timeoutNanos) {
-    return new Invocation(service, args, timeoutNanos, 0, false);
+  public static Invocation local(ServiceDescriptor service, Object[] args, long timeoutNanos,
+      Caller caller, CallContext context) {
+    return new Invocation(service, args, timeoutNanos, 0, false, caller, context);
   }
 
   public ServiceDescriptor service() {
@@ -48,6 +55,16 @@ public final class Invocation {
 
   public Object[] args() {
     return args;
+  }
+
+  /** Who makes the call. */
+  public Caller caller() {
+    return caller;
+  }
+
+  /** The call's context: {@link CallContext#EMPTY} for most calls. */
+  public CallContext context() {
+    return context;
   }
 
   /** The {@link System#nanoTime()} value after which the caller stops waiting. */
@@ -66,7 +83,7 @@ public final class Invocation {
 
   /** The same call with other arguments (and the same deadline). */
   public Invocation withArgs(Object[] newArgs) {
-    return new Invocation(service, newArgs, 0, deadlineNanos(), true);
+    return new Invocation(service, newArgs, 0, deadlineNanos(), true, caller, context);
   }
 
   @Override

@@ -25,7 +25,7 @@ public final class LocalInvoker implements CallLink {
     ServiceDescriptor d = call.service();
     LocalService s = registry.local(d.serviceId());
     if (s == null || !s.isActive() || !s.descriptor().containerId().equals(d.containerId())) {
-      throw unavailable(d, "it was deregistered");
+      throw CallErrors.gone(d, "it was deregistered");
     }
     Object[] args = Arguments.check(d, s.parameterTypes(), call.args());
     try {
@@ -33,20 +33,8 @@ public final class LocalInvoker implements CallLink {
     } catch (VirtualMachineError e) {
       throw e;
     } catch (Throwable t) {
-      throw threw(d, t);
+      throw CallErrors.threw(d, t);
     }
   }
 
-  // Out of line: proceed() runs on every call, and the smaller it is, the more of the call the
-  // JIT compiles into one piece.
-  private static TRADEInvocationException threw(ServiceDescriptor d, Throwable t) {
-    return new TRADEInvocationException("Service " + d.signature() + " threw "
-        + t.getClass().getName() + (t.getMessage() == null ? "" : ": " + t.getMessage()), t);
-  }
-
-  /** The error for a service that is gone; its message starts as existing callers expect. */
-  public static TRADEServiceUnavailableException unavailable(ServiceDescriptor d, String why) {
-    return new TRADEServiceUnavailableException("Service not available any longer: "
-        + d.signature() + " of container " + d.containerName() + " (" + why + ")");
-  }
 }

@@ -1,13 +1,16 @@
 package dev.trade.internal.container;
 
-import dev.trade.TRADEBadArgumentsException;
 import dev.trade.TRADEException;
 import dev.trade.TRADEServiceNotFoundException;
 import dev.trade.internal.call.Arguments;
+import dev.trade.internal.call.CallContext;
+import dev.trade.internal.call.CallErrors;
 import dev.trade.internal.call.CallChain;
 import dev.trade.internal.call.CallLink;
+import dev.trade.internal.call.Caller;
 import dev.trade.internal.call.Invocation;
 import dev.trade.internal.call.LocalInvoker;
+import dev.trade.internal.call.Provider;
 import dev.trade.internal.call.Returns;
 import dev.trade.internal.call.ServiceCaller;
 import dev.trade.internal.call.ValueCopier;
@@ -21,34 +24,26 @@ import dev.trade.internal.registry.Entry;
 import dev.trade.internal.registry.LocalService;
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
-import dev.trade.internal.registry.Types;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.lang.System.Logger;
 import java.lang.System.Logger.Level;
 import java.net.InetSocketAddress;
-import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
-import java.util.Map;
 import java.util.UUID;
-import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicInteger;
 
 /**
  * The machinery behind one {@code TRADEContainer}: identity, registry and the call chain.
  *
  * <p>A call takes one path: {@code route → (local: [copy] → host chain → [copy] | remote)}, where
- * the host chain ({@code hooks → locks → invoke}) runs in the container that provides the service,
- * so that it sees calls from everywhere. This class is safe for concurrent use.
+ * the host chain ({@link #hostLinks}) runs in the container that provides the service, so that it
+ * sees calls from everywhere. This class is safe for concurrent use.
  */
 public final class ContainerCore implements ServiceCaller {
   private static final Logger LOG = System.getLogger("dev.trade.registry");
   private static final AtomicInteger INSTANCES = new AtomicInteger();
-  private static final int MAX_RESOLVED = 1024;
-
-  private record Resolved(ClassLoader loader, Class<?> type) {}
-
   private final UUID uuid = UUID.randomUUID();
   private final String id = uuid.toString();
   private final String name;
@@ -56,6 +51,9 @@ public final class ContainerCore implements ServiceCaller {
   private final Settings settings;
   private final Registry registry;
   private final CallChain hostChain;
+  private final RemoteCaller remote;
+  /** This container as the caller of its own local calls. */
+  private final Caller self;
   private final AllowList allowList;
   private final Codec codec;
   private final ValueCopier copier;
@@ -63,8 +61,6 @@ public final class ContainerCore implements ServiceCaller {
   private final Limits limits;
   // Written once under this' lock; networking may start later, when discovery is switched on.
   private volatile Network network;
-  /** Declared return types of services called from here, by type name; see declaredReturnType. */
-  private final Map<String, Resolved> returnTypes = new ConcurrentHashMap<>();
   private volatile boolean closed;
 
   /**
@@ -91,8 +87,9 @@ public final class ContainerCore implements ServiceCaller {
     this.codec = new Codec(allowList, limits, infos);
     this.copier = settings.copyDataForLocalInvokes() ? codec::copy : null;
     this.defaultTimeoutNanos = settings.callTimeout().toNanos();
-    List<CallLink> hostLinks = new ArrayList<>();
-    this.hostChain = new CallChain(hostLinks, new LocalInvoker(registry));
+    this.hostChain = new CallChain(hostLinks(), new LocalInvoker(registry));
+    this.remote = new RemoteCaller(allowList, () -> network);
+    this.self = Caller.of(uuid);
     if (networked(settings)) {
       network = startNetwork();
     }
@@ -105,7 +102,7 @@ public final class ContainerCore implements ServiceCaller {
 
   private Network startNetwork() {
     Codec tables = new Codec(allowList, limits, InfoBinding.DESCRIPTORS, false);
-    Network n = new Network(settings, uuid, name, host, registry, codec, tables, new Network.Host() {
+    Network n = new Network(settings, uuid, name, host, registry, codec, tables, new Provider() {
       @Override
       public LocalService local(long serviceId) {
         return registry.local(serviceId);
@@ -169,7 +166,7 @@ public final class ContainerCore implements ServiceCaller {
   public void setDiscovery(boolean on) {
     if (on || network != null) {
       try {
-        network().setDiscovery(on);
+        network().discovery().setDiscovery(on);
       } catch (IOException e) {
         throw new UncheckedIOException("cannot start discovery: " + e.getMessage(), e);
       }
@@ -180,7 +177,7 @@ public final class ContainerCore implements ServiceCaller {
   public void setBroadcast(boolean on) {
     if (on || network != null) {
       try {
-        network().setBroadcast(on);
+        network().discovery().setBroadcast(on);
       } catch (IOException e) {
         throw new UncheckedIOException("cannot start announcing: " + e.getMessage(), e);
       }
@@ -189,12 +186,12 @@ public final class ContainerCore implements ServiceCaller {
 
   public boolean isDiscovering() {
     Network n = network;
-    return n != null && n.isDiscovering();
+    return n != null && n.discovery().isDiscovering();
   }
 
   public boolean isBroadcasting() {
     Network n = network;
-    return n != null && n.isBroadcasting();
+    return n != null && n.discovery().isBroadcasting();
   }
 
   /** The addresses this container accepts connections on (empty without networking). */
@@ -240,67 +237,44 @@ public final class ContainerCore implements ServiceCaller {
     return e == null ? -1 : e.distance();
   }
 
+  /**
+   * The caller half, whose one job is routing: a service of this container goes through the host
+   * chain here ({@link #callLocal}), any other to the {@link RemoteCaller}, which hands it to the
+   * network; the host chain of the providing container runs it there. The arguments are
+   * normalized and counted once, here, for both ways.
+   */
   @Override
   public <T> T call(ServiceDescriptor d, Class<T> returnType, Object[] args, long timeoutNanos)
       throws TRADEException {
     Object[] normalized = Arguments.normalize(d, args);
-    long timeout = timeoutNanos > 0 ? timeoutNanos : defaultTimeoutNanos;
-    if (d.containerId().equals(id)) {
-      return callLocal(d, returnType, normalized, timeout);
-    }
-    long deadline = System.nanoTime() + timeout;
-    Network n = network;
-    if (n == null) {
-      throw LocalInvoker.unavailable(d, "this container has no network");
-    }
-    ClassLoader loader = callerLoader(returnType);
-    Class<?> declared = declaredReturnType(d, loader);
-    Returns.check(d, returnType, declared);
-    // The types the caller's own code names may arrive: the declared return type when this JVM
-    // has it, and the requested one. Nothing a remote peer names alone is allowed this way.
-    if (declared != null) {
-      allowList.addPackageOf(declared);
-    }
-    allowList.addPackageOf(returnType);
     if (normalized.length != d.parameterTypeNames().size()) {
-      throw new TRADEBadArgumentsException("Service " + d.signature() + " takes "
-          + d.parameterTypeNames().size() + " arguments but got " + normalized.length);
+      throw CallErrors.argumentCount(d, normalized.length);
     }
-    return Returns.convert(d, returnType, n.call(d, normalized, deadline, loader));
+    long timeout = timeoutNanos > 0 ? timeoutNanos : defaultTimeoutNanos;
+    return d.containerId().equals(id)
+        ? callLocal(d, returnType, normalized, timeout)
+        : remote.call(d, returnType, normalized, CallContext.EMPTY, timeout);
   }
 
-  /** The service's declared return type as {@code loader} sees it, or null if it cannot. */
-  private Class<?> declaredReturnType(ServiceDescriptor d, ClassLoader loader) {
-    // Class.forName on every call would cost more than the rest of a call's preparation.
-    Resolved r = returnTypes.get(d.returnTypeName());
-    if (r != null && r.loader == loader) {
-      return r.type;
-    }
-    Class<?> type = Types.resolve(d.returnTypeName(), loader);
-    if (returnTypes.size() >= MAX_RESOLVED) {
-      returnTypes.clear(); // names come from peers' tables: bounded, not trusted
-    }
-    returnTypes.put(d.returnTypeName(), new Resolved(loader, type));
-    return type;
-  }
-
-  private static ClassLoader callerLoader(Class<?> returnType) {
-    ClassLoader l = Thread.currentThread().getContextClassLoader();
-    if (l == null) {
-      l = returnType.getClassLoader();
-    }
-    return l != null ? l : ContainerCore.class.getClassLoader();
+  /**
+   * The host chain's links in the order every call passes them, the invoker last. Later features
+   * fill it in this order: {@code access → locks → hooks → invoke} (access control first, so that
+   * nothing else sees a refused call; hooks last, so that they see only calls that will run).
+   */
+  private static List<CallLink> hostLinks() {
+    return List.of(); // access, locks and hooks come with their features
   }
 
   private <T> T callLocal(ServiceDescriptor d, Class<T> returnType, Object[] args, long timeout)
       throws TRADEException {
     LocalService s = registry.local(d.serviceId());
     if (s == null) {
-      throw LocalInvoker.unavailable(d, "it was deregistered");
+      throw CallErrors.gone(d, "it was deregistered");
     }
     Returns.check(d, returnType, s.returnType());
     if (copier == null) {
-      return Returns.convert(d, returnType, hostChain.call(Invocation.local(d, args, timeout)));
+      return Returns.convert(d, returnType,
+          hostChain.call(Invocation.local(d, args, timeout, self, CallContext.EMPTY)));
     }
     ClassLoader providerLoader = s.target().getClass().getClassLoader();
     if (providerLoader == null) {
@@ -310,8 +284,9 @@ public final class ContainerCore implements ServiceCaller {
     for (int i = 0; i < args.length; i++) {
       copies[i] = copier.copy(args[i], providerLoader);
     }
-    Object result = hostChain.call(Invocation.local(d, copies, timeout));
-    return Returns.convert(d, returnType, copier.copy(result, callerLoader(returnType)));
+    Object result = hostChain.call(Invocation.local(d, copies, timeout, self, CallContext.EMPTY));
+    return Returns.convert(d, returnType,
+        copier.copy(result, RemoteCaller.callerLoader(returnType)));
   }
 
   /** Deregisters everything and stops; idempotent. */

@@ -3,16 +3,25 @@ package dev.trade.internal.net;
 import static dev.trade.internal.net.ControlExecutor.daemon;
 
 import dev.trade.TRADEException;
-import dev.trade.internal.call.Invocation;
+import dev.trade.internal.call.CallContext;
+import dev.trade.internal.call.Provider;
 import dev.trade.internal.codec.Codec;
 import dev.trade.internal.config.PeerAddress;
 import dev.trade.internal.config.Settings;
-import dev.trade.internal.registry.LocalService;
+import dev.trade.internal.net.join.DiscoveryController;
+import dev.trade.internal.net.link.Connector;
+import dev.trade.internal.net.link.Handshake;
+import dev.trade.internal.net.link.Heartbeat;
+import dev.trade.internal.net.link.Link;
+import dev.trade.internal.net.link.LinkReferee;
+import dev.trade.internal.net.link.ReadWatch;
+import dev.trade.internal.net.mesh.Replication;
+import dev.trade.internal.net.remote.RemoteCalls;
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
 import java.io.IOException;
-import java.lang.System.Logger;
 import java.lang.System.Logger.Level;
+import java.lang.System.Logger;
 import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.util.List;
@@ -21,8 +30,8 @@ import java.util.Set;
 import java.util.UUID;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
-import java.util.concurrent.ExecutorService;
 import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
@@ -40,13 +49,6 @@ import java.util.concurrent.TimeoutException;
 public final class Network implements AutoCloseable {
   private static final Logger LOG = System.getLogger("dev.trade.net");
 
-  /** The providing side of the container: its services and its host chain. */
-  public interface Host {
-    LocalService local(long serviceId);
-
-    Object invoke(Invocation call) throws TRADEException;
-  }
-
   private final Settings settings;
   private final UUID self;
   private final String name;
@@ -58,9 +60,9 @@ public final class Network implements AutoCloseable {
   private final RemoteCalls calls;
   private final Replication replication;
   private final ReadWatch readWatch;
-  private final Dispatch dispatch;
-  private final DiscoverySwitches discovery;
-  private final LinkSwaps swaps;
+  private final FrameDispatcher dispatch;
+  private final DiscoveryController discovery;
+  private final LinkReferee swaps;
   private final Map<UUID, Link> links = new ConcurrentHashMap<>();
   /**
    * Every link whose reader runs, registered in {@link #links} or not yet: heartbeats and the
@@ -79,7 +81,7 @@ public final class Network implements AutoCloseable {
    * @param tableCodec a codec whose service-info binding is the descriptor itself
    */
   public Network(Settings settings, UUID self, String name, String host, Registry registry,
-      Codec codec, Codec tableCodec, Host provider) {
+      Codec codec, Codec tableCodec, Provider provider) {
     this.settings = settings;
     this.self = self;
     this.name = name;
@@ -89,13 +91,13 @@ public final class Network implements AutoCloseable {
     this.readWatch = new ReadWatch(live, workers, name);
     this.calls = new RemoteCalls(self, codec, this::nextHop, provider, timer,
         settings.maxFrameSize());
-    this.replication = new Replication(self, registry, tableCodec, links, calls,
+    this.replication = new Replication(self, registry, tableCodec, links,
         settings.failureTimeout().plus(settings.heartbeatInterval()).toNanos(),
         this::onControlAfter, this::unreachable);
     // The frames of a burst of state changes leave together (one system call per link).
     this.control = new ControlExecutor(daemon("trade-control-" + name), replication::flushQueued);
-    this.dispatch = new Dispatch(calls, replication, this,
-        Dispatch.backlogLimit(settings.maxFrameSize()));
+    this.dispatch = new FrameDispatcher(calls, replication, this,
+        FrameDispatcher.backlogLimit(settings.maxFrameSize()));
     if (settings.defaultCredentialsBeyondThisHost()) {
       LOG.log(Level.WARNING, "{0}: CREDENTIALS has its published default value, and this container"
           + " reaches beyond this host: anyone who can reach it can join the system. Give every"
@@ -104,7 +106,7 @@ public final class Network implements AutoCloseable {
     Handshake handshake = new Handshake(new Handshake.Identity(settings.tradeSysId(), self, name,
         host, List.of(), settings.useEncryption(), true, settings.maxFrameSize()),
         settings.credentials());
-    this.swaps = new LinkSwaps(settings.clientSocketTimeout().toNanos(),
+    this.swaps = new LinkReferee(settings.clientSocketTimeout().toNanos(),
         settings.failureTimeout().toNanos(), this::onControlAfter);
     this.connector = new Connector(name, handshake, (int) settings.clientSocketTimeout().toMillis(),
         workers, timer, new Connector.Sink() {
@@ -133,7 +135,7 @@ public final class Network implements AutoCloseable {
             });
           }
         });
-    this.discovery = new DiscoverySwitches(settings, self, name, connector, this::linkedOrLinking,
+    this.discovery = new DiscoveryController(settings, self, name, connector, this::linkedOrLinking,
         replication::reachable, timer, () -> closed);
     registry.addListener(
         (added, removed) -> replication.localChanged(added, removed, this::onControl));
@@ -158,54 +160,23 @@ public final class Network implements AutoCloseable {
     }
   }
 
-  /**
-   * Turns multicast discovery (listening for announcements and connecting) on or off at run time.
-   *
-   * @throws IOException if discovery has to start and cannot open its socket
-   */
-  public void setDiscovery(boolean on) throws IOException {
-    discovery.setDiscovery(on);
+  /** Announcing, discovery and listening, and their switches. */
+  public DiscoveryController discovery() {
+    return discovery;
   }
 
   /**
-   * Turns announcing this container on or off at run time (then accepting connections, if not yet).
-   *
-   * @throws IOException if a listen socket or the discovery socket cannot be opened
+   * A container left or died (routing lost it; on the control thread): the calls waiting on it fail
+   * at once, and discovery stops counting it.
    */
-  public void setBroadcast(boolean on) throws IOException {
-    discovery.setBroadcast(on);
-  }
-
-  /** Whether this container listens for announcements. */
-  public boolean isDiscovering() {
-    return discovery.isDiscovering();
-  }
-
-  /** Whether this container announces itself. */
-  public boolean isBroadcasting() {
-    return discovery.isBroadcasting();
-  }
-
-  /** A container left or died (routing lost it): discovery stops counting it at once. */
   private void unreachable(UUID container) {
+    calls.failTo(container, "container " + container + " left or is not reachable any more");
     discovery.unreachable(container);
   }
 
   /** The addresses this container accepts connections on. */
   public List<InetSocketAddress> listenAddresses() {
     return connector.listening();
-  }
-
-  /** Connects to a container at {@code address} once (an address heard from discovery). */
-  public void connect(InetSocketAddress address) {
-    if (!closed) {
-      connector.connectOnce(address);
-    }
-  }
-
-  /** Keeps a link to {@code address}, as CONNECTCONTAINERS does. */
-  public void keepConnected(InetSocketAddress address) {
-    connector.keepConnected(address);
   }
 
   /** Ids of the containers this one has a direct link to. */
@@ -225,10 +196,14 @@ public final class Network implements AutoCloseable {
     return dialled.size();
   }
 
+  void connect(InetSocketAddress address) { // for tests: discovery dials through its finder
+    connector.connectOnce(address);
+  }
+
   /** Calls a remote service; see {@code ServiceCaller}. */
-  public Object call(ServiceDescriptor d, Object[] args, long deadlineNanos, ClassLoader loader)
-      throws TRADEException {
-    return calls.call(d, args, deadlineNanos, loader);
+  public Object call(ServiceDescriptor d, Object[] args, CallContext context, long deadlineNanos,
+      ClassLoader loader) throws TRADEException {
+    return calls.call(d, args, context, deadlineNanos, loader);
   }
 
   private Link nextHop(UUID container) {
@@ -255,7 +230,7 @@ public final class Network implements AutoCloseable {
       if (initiatedHere) { // kept while the peer is linked, whichever of its links stays
         dialled.put((InetSocketAddress) socket.getRemoteSocketAddress(), peer.containerId());
       }
-      Link drop = LinkSwaps.toClose(links.get(peer.containerId()), link, self);
+      Link drop = LinkReferee.toClose(links.get(peer.containerId()), link, self);
       if (drop != null) {
         LOG.log(Level.DEBUG, "{0}: closed a duplicate link to {1}", name, peer.name());
       }
@@ -335,9 +310,9 @@ public final class Network implements AutoCloseable {
     });
   }
 
-  /** Takes a held loss of the link to {@code peer} now, if it is still held and due (LinkSwaps). */
+  /** Takes a held loss of the link to {@code peer} now, if it is still held and due (LinkReferee). */
   private void settle(UUID peer) {
-    LinkSwaps.Held h = swaps.settle(peer, links.get(peer), System.nanoTime());
+    LinkReferee.Held h = swaps.settle(peer, links.get(peer), System.nanoTime());
     if (h != null) {
       lost(h.link(), h.reason());
     }
@@ -346,7 +321,7 @@ public final class Network implements AutoCloseable {
   private void lost(Link link, String reason) {
     if (links.remove(link.peerId, link)) {
       dialled.values().removeIf(link.peerId::equals);
-      boolean orderly = closed || reason.equals(Dispatch.GOODBYE);
+      boolean orderly = closed || reason.equals(FrameDispatcher.GOODBYE);
       LOG.log(orderly ? Level.DEBUG : Level.INFO, "{0}: link to {1} closed: {2}", name,
           link.peerName, reason);
       calls.failVia(link.peerId, "the connection to " + link.peerName + " was lost ("

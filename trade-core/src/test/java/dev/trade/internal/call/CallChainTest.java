@@ -11,10 +11,12 @@ import dev.trade.TRADEException;
 import dev.trade.internal.registry.ServiceDescriptor;
 import java.util.List;
 import java.util.Set;
+import java.util.UUID;
 import org.junit.jupiter.api.Test;
 import org.mockito.InOrder;
 
 class CallChainTest {
+  private static final Caller CALLER = Caller.of(new UUID(0, 1));
   private static final ServiceDescriptor SERVICE = new ServiceDescriptor("c", "c", "h", 1, "s",
       List.of(), List.of(), "void", Set.of(), List.of());
 
@@ -35,7 +37,7 @@ class CallChainTest {
       return "done";
     };
     CallChain chain = new CallChain(List.of(passing("hooks", trace), passing("locks", trace)), terminal);
-    assertEquals("done", chain.call(new Invocation(SERVICE, new Object[0], 0)));
+    assertEquals("done", chain.call(new Invocation(SERVICE, new Object[0], 0, CALLER, CallContext.EMPTY)));
     assertEquals("hooks>locks>invoke<locks<hooks", trace.toString());
   }
 
@@ -43,7 +45,7 @@ class CallChainTest {
   void aLinkSeesTheInvocationItsPredecessorPassed() throws TRADEException {
     CallLink first = mock(CallLink.class);
     CallLink terminal = mock(CallLink.class);
-    Invocation original = new Invocation(SERVICE, new Object[] {1}, 0);
+    Invocation original = new Invocation(SERVICE, new Object[] {1}, 0, CALLER, CallContext.EMPTY);
     Invocation replaced = original.withArgs(new Object[] {2});
     when(first.proceed(any(), any())).thenAnswer(a -> a.<CallLink.Next>getArgument(1).proceed(replaced));
     when(terminal.proceed(any(), any())).thenReturn("r");
@@ -61,13 +63,13 @@ class CallChainTest {
     };
     CallChain chain = new CallChain(List.of(twice), (call, next) -> null);
     IllegalStateException e = assertThrows(IllegalStateException.class,
-        () -> chain.call(new Invocation(SERVICE, new Object[0], 0)));
+        () -> chain.call(new Invocation(SERVICE, new Object[0], 0, CALLER, CallContext.EMPTY)));
     assertEquals(twice.getClass().getName() + " called next.proceed() more than once", e.getMessage());
   }
 
   @Test
   void terminalMayNotProceed() {
     CallChain chain = new CallChain(List.of(), (call, next) -> next.proceed(call));
-    assertThrows(IllegalStateException.class, () -> chain.call(new Invocation(SERVICE, new Object[0], 0)));
+    assertThrows(IllegalStateException.class, () -> chain.call(new Invocation(SERVICE, new Object[0], 0, CALLER, CallContext.EMPTY)));
   }
 }

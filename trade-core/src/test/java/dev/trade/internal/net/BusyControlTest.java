@@ -8,6 +8,7 @@ import dev.trade.internal.codec.Codec;
 import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.codec.Limits;
 import dev.trade.internal.config.Settings;
+import dev.trade.internal.net.link.Wire;
 import dev.trade.internal.registry.Registry;
 import java.time.Duration;
 import java.util.Properties;

@@ -3,6 +3,8 @@ package dev.trade.internal.net;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import dev.trade.TRADEContainer;
+import dev.trade.internal.net.link.Wire;
+import dev.trade.testing.Await;
 import java.io.IOException;
 import java.net.InetSocketAddress;
 import java.net.Socket;
@@ -28,7 +30,7 @@ class CloseWhileLinkingTest {
       RawPeer.Begun begun = late.begin("late", 1);
       closing.start();
       // It stops accepting connections once it counts as closing.
-      Deadline.await(Duration.ofSeconds(10), () -> !accepts(address), "the container to close");
+      Await.until(Duration.ofSeconds(10), () -> !accepts(address), "the container to close");
       late.finish(begun);
       byte[] frame;
       do { // what it may send first (its link state, a ping)

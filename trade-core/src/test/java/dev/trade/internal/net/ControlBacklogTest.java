@@ -2,6 +2,7 @@ package dev.trade.internal.net;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
+import dev.trade.internal.net.link.ControlBacklog;
 import org.junit.jupiter.api.Test;
 
 class ControlBacklogTest {
@@ -23,8 +24,8 @@ class ControlBacklogTest {
 
   @Test
   void theLimitIsTwoOfTheLargestFramesAndAtLeast16MiB() {
-    assertEquals(16L << 20, Dispatch.backlogLimit(1024));
-    assertEquals(128L << 20, Dispatch.backlogLimit(64 << 20));
-    assertEquals(2L * Integer.MAX_VALUE - 16, Dispatch.backlogLimit(Integer.MAX_VALUE - 8));
+    assertEquals(16L << 20, FrameDispatcher.backlogLimit(1024));
+    assertEquals(128L << 20, FrameDispatcher.backlogLimit(64 << 20));
+    assertEquals(2L * Integer.MAX_VALUE - 16, FrameDispatcher.backlogLimit(Integer.MAX_VALUE - 8));
   }
 }

@@ -6,6 +6,7 @@ import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.codec.Limits;
 import dev.trade.internal.config.Settings;
 import dev.trade.internal.registry.Registry;
+import dev.trade.testing.Await;
 import java.time.Duration;
 import java.util.Properties;
 import java.util.UUID;
@@ -28,11 +29,11 @@ class DialledAddressesTest {
         try (Network b = network("b" + i)) {
           b.start();
           a.connect(b.listenAddresses().get(0));
-          Deadline.await(WAIT, () -> a.neighbours().size() == 1, "a linked to b" + i);
-          Deadline.await(WAIT, () -> a.dialledAddresses() == 1, "b" + i + "'s address remembered");
+          Await.until(WAIT, () -> a.neighbours().size() == 1, "a linked to b" + i);
+          Await.until(WAIT, () -> a.dialledAddresses() == 1, "b" + i + "'s address remembered");
         }
-        Deadline.await(WAIT, () -> a.neighbours().isEmpty(), "b" + i + " gone");
-        Deadline.await(WAIT, () -> a.dialledAddresses() == 0, "b" + i + "'s address forgotten");
+        Await.until(WAIT, () -> a.neighbours().isEmpty(), "b" + i + " gone");
+        Await.until(WAIT, () -> a.dialledAddresses() == 0, "b" + i + "'s address forgotten");
       }
     }
   }

@@ -7,7 +7,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trade.TRADEContainer;
 import dev.trade.TRADEService;
+import dev.trade.internal.net.link.Wire;
+import dev.trade.internal.net.mesh.Digest;
+import dev.trade.internal.net.mesh.Topology;
 import dev.trade.internal.registry.Table;
+import dev.trade.testing.Await;
 import java.net.InetSocketAddress;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -120,7 +124,7 @@ class DigestTest {
   /** The provider closes the link for {@code reason}, not later as silent (we send no pings). */
   private void awaitClosedFor(RawPeer p, String reason) throws Exception {
     p.awaitClosed(Duration.ofSeconds(5));
-    Deadline.await(Duration.ofSeconds(5), () -> log.has(Level.INFO, "closed: malformed", reason),
+    Await.until(Duration.ofSeconds(5), () -> log.has(Level.INFO, "closed: malformed", reason),
         "the reason in:\n" + log.tail());
   }
 

@@ -12,6 +12,12 @@ import dev.trade.internal.codec.ByteSource;
 import dev.trade.internal.codec.Codec;
 import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.codec.Limits;
+import dev.trade.internal.net.link.Frames;
+import dev.trade.internal.net.link.Handshake;
+import dev.trade.internal.net.link.LinkReferee;
+import dev.trade.internal.net.link.Wire;
+import dev.trade.internal.net.remote.RemoteCalls;
+import dev.trade.testing.Await;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.ServerSocket;
@@ -46,7 +52,7 @@ class DuplicateLinkTest {
         .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build()) {
       RawPeer linked = RawPeer.connect(c, twin);
       linked.handshake("twin", 1);
-      Deadline.await(WAIT, () -> c.getNeighbours().contains(id), "the first link");
+      Await.until(WAIT, () -> c.getNeighbours().contains(id), "the first link");
       AtomicBoolean done = new AtomicBoolean();
       AtomicInteger missing = new AtomicInteger();
       Thread watcher = new Thread(() -> {
@@ -90,11 +96,11 @@ class DuplicateLinkTest {
         RawPeer later = RawPeer.connect(c, twin);
         RawPeer earlier = RawPeer.connect(c, twin)) {
       later.handshake("twin-second", 2);
-      Deadline.await(WAIT, () -> readers("twin-second") == 1, "the link dialled second");
+      Await.until(WAIT, () -> readers("twin-second") == 1, "the link dialled second");
       earlier.handshake("twin-first", 1); // its handshake finishes last
       readToGoodbye(earlier);
       earlier.close();
-      Deadline.await(WAIT, () -> readers("twin-first") == 0, "the link dialled first to end");
+      Await.until(WAIT, () -> readers("twin-first") == 0, "the link dialled first to end");
       assertEquals(1, readers("twin-second"), "links dialled second");
       assertEquals(List.of(twin.toString()), c.getNeighbours());
     }
@@ -120,7 +126,7 @@ class DuplicateLinkTest {
             TRADEContainer dialling = TRADEContainer.builder().name("dialling")
                 .property("CONNECTCONTAINERS", "127.0.0.1@" + first + ",127.0.0.2@" + second).build()) {
           int r = round;
-          Deadline.await(WAIT, () -> handshakes(log, "dialling", "two-homed") >= 2 * (r + 1)
+          Await.until(WAIT, () -> handshakes(log, "dialling", "two-homed") >= 2 * (r + 1)
               && handshakes(log, "two-homed", "dialling") >= 2 * (r + 1)
               && dialling.getNeighbours().size() == 1 && homed.getNeighbours().size() == 1,
               "both handshakes at both ends, round " + round + "; have " + log.tail());
@@ -161,19 +167,19 @@ class DuplicateLinkTest {
         RawPeer old = RawPeer.connect(c, twin);
         RawPeer next = RawPeer.connect(c, twin)) {
       old.handshake("twin", 1);
-      Deadline.await(WAIT, () -> c.getNeighbours().contains(twin.toString()), "the first link");
+      Await.until(WAIT, () -> c.getNeighbours().contains(twin.toString()), "the first link");
       RawPeer.Begun begun = next.begin("twin", 2);
       old.close();
-      Deadline.await(WAIT, () -> log.has(Level.FINE, "holder: link to twin closed", "the loss waits"),
+      Await.until(WAIT, () -> log.has(Level.FINE, "holder: link to twin closed", "the loss waits"),
           "the loss held; have " + log.tail());
       if (!replaced) {
         next.close(); // the handshake fails
-        Deadline.await(WAIT, () -> log.has(Level.INFO, "holder: link to twin closed")
+        Await.until(WAIT, () -> log.has(Level.INFO, "holder: link to twin closed")
             && c.getNeighbours().isEmpty(), "the loss taken; have " + log.tail());
         return;
       }
       next.finish(begun);
-      Deadline.await(WAIT, () -> log.has(Level.FINE, "holder: linked to twin")
+      Await.until(WAIT, () -> log.has(Level.FINE, "holder: linked to twin")
           && readers("twin") == 1, "the replacement; have " + log.tail());
       assertEquals(List.of(twin.toString()), c.getNeighbours());
       assertFalse(log.has(Level.INFO, "closed:"), log.tail());
@@ -215,7 +221,7 @@ class DuplicateLinkTest {
         RawPeer kept = RawPeer.connect(c, twin)) {
       c.registerAllServices(new FreshLinkTest.Arm()); // its first service: id 1
       Handshake.Peer provider = old.handshake("twin", 1);
-      Deadline.await(WAIT, () -> c.getNeighbours().contains(twin.toString()), "the first link");
+      Await.until(WAIT, () -> c.getNeighbours().contains(twin.toString()), "the first link");
       kept.handshake("twin", 2);
       readToGoodbye(old); // retired, and still open until we close it
       Codec codec = new Codec(AllowList.withDefaults(), Limits.DEFAULT, InfoBinding.NONE);
@@ -238,15 +244,15 @@ class DuplicateLinkTest {
     UUID small = new UUID(0, 1);
     UUID large = new UUID(-1, -1); // the largest as unsigned bytes
     // Dialled by both: the link the smaller id dialled, whatever the dial numbers.
-    assertTrue(LinkSwaps.keepsAdded(large, 9, small, 1));
-    assertFalse(LinkSwaps.keepsAdded(small, 1, large, 9));
+    assertTrue(LinkReferee.keepsAdded(large, 9, small, 1));
+    assertFalse(LinkReferee.keepsAdded(small, 1, large, 9));
     // Dialled by one: the one it dialled later.
-    assertTrue(LinkSwaps.keepsAdded(small, 1, small, 2));
-    assertFalse(LinkSwaps.keepsAdded(small, 2, small, 1));
+    assertTrue(LinkReferee.keepsAdded(small, 1, small, 2));
+    assertFalse(LinkReferee.keepsAdded(small, 2, small, 1));
     // A dialler that did not number its links: the one added last.
-    assertTrue(LinkSwaps.keepsAdded(small, 0, small, 0));
-    assertTrue(LinkSwaps.keepsAdded(small, 5, small, 0));
-    assertTrue(LinkSwaps.keepsAdded(small, 0, small, 5));
+    assertTrue(LinkReferee.keepsAdded(small, 0, small, 0));
+    assertTrue(LinkReferee.keepsAdded(small, 5, small, 0));
+    assertTrue(LinkReferee.keepsAdded(small, 0, small, 5));
   }
 
   /** Reads what the container sent over a link until its GOODBYE. */

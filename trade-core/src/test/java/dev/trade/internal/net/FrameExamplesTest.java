@@ -6,11 +6,20 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trade.TRADEService;
 import dev.trade.internal.call.Arguments;
+import dev.trade.internal.call.CallContext;
 import dev.trade.internal.codec.AllowList;
 import dev.trade.internal.codec.ByteSink;
 import dev.trade.internal.codec.Codec;
 import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.codec.Limits;
+import dev.trade.internal.net.link.Frames;
+import dev.trade.internal.net.link.Handshake;
+import dev.trade.internal.net.link.Wire;
+import dev.trade.internal.net.mesh.Digest;
+import dev.trade.internal.net.mesh.StateFrames;
+import dev.trade.internal.net.mesh.Topology;
+import dev.trade.internal.net.remote.RemoteCalls;
+import dev.trade.internal.net.remote.ReplySender;
 import dev.trade.internal.registry.LocalService;
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
@@ -92,11 +101,20 @@ class FrameExamplesTest {
     return hub.callFrame(ARM, 1, d.serviceId(), 30_000, Arguments.normalize(d, new Object[] {3}));
   }
 
+  /** The same call with a context of one entry. */
+  private static byte[] callFrameWithContext() throws Exception {
+    Registry registry = new Registry(ARM.toString(), "arm", "robot1");
+    ServiceDescriptor d = registry.register(new RobotArm(), List.of()).get(0).descriptor();
+    RemoteCalls hub = new RemoteCalls(HUB, codec(), null, null, null, 1 << 26);
+    return hub.callFrame(ARM, 1, d.serviceId(), 30_000, Arguments.normalize(d, new Object[] {3}),
+        CallContext.of(Map.of("x.trace", "42")));
+  }
+
   /** The arm's successful reply to that call: {@code true}. */
   private static byte[] replyFrame() throws Exception {
     byte[] call = callFrame();
     byte[] payload = Arrays.copyOfRange(call, Wire.HEADER, call.length);
-    Replies arm = new Replies(ARM, null, null, 1 << 26);
+    ReplySender arm = new ReplySender(ARM, null, null, 1 << 26);
     ByteSink out = arm.replyStart(payload, Wire.OK);
     codec().write(Boolean.TRUE, out);
     return Frames.finish(out);
@@ -158,6 +176,11 @@ class FrameExamplesTest {
   @Test
   void callExample() throws Exception {
     assertDocumented("call", callFrame());
+  }
+
+  @Test
+  void callWithContextExample() throws Exception {
+    assertDocumented("call-context", callFrameWithContext());
   }
 
   @Test

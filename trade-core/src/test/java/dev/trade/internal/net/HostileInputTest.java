@@ -9,6 +9,10 @@ import dev.trade.TRADEException;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
+import dev.trade.internal.net.link.Connector;
+import dev.trade.internal.net.link.Handshake;
+import dev.trade.internal.net.link.Wire;
+import dev.trade.testing.Await;
 import java.io.IOException;
 import java.net.InetSocketAddress;
 import java.nio.ByteBuffer;
@@ -61,7 +65,7 @@ class HostileInputTest {
   void linkTheBystander() throws TRADEException {
     server.registerAllServices(new Arm());
     TRADEServiceConstraints open = new TRADEServiceConstraints().name("openGripper");
-    Deadline.await(Duration.ofSeconds(10), () -> !client.getAvailableServices(open).isEmpty(),
+    Await.until(Duration.ofSeconds(10), () -> !client.getAvailableServices(open).isEmpty(),
         "openGripper to reach the bystander");
     TRADEServiceInfo service = client.getAvailableService(open);
     caller = new SteadyCaller(service, 3);
@@ -103,7 +107,7 @@ class HostileInputTest {
   }
 
   private void awaitLog(String... parts) {
-    Deadline.await(Duration.ofSeconds(5), () -> log.has(Level.WARNING, parts) || log.has(Level.INFO, parts),
+    Await.until(Duration.ofSeconds(5), () -> log.has(Level.WARNING, parts) || log.has(Level.INFO, parts),
         "a log line with " + Arrays.toString(parts) + "; last lines:\n" + log.tail());
   }
 
@@ -273,7 +277,7 @@ class HostileInputTest {
     }
     assertTrue(peak.get() <= baseline + Connector.MAX_HANDSHAKES + 4,
         "peak of " + peak + " trade threads, baseline " + baseline);
-    Deadline.await(Duration.ofSeconds(10), () -> tradeThreads() <= baseline + 2,
+    Await.until(Duration.ofSeconds(10), () -> tradeThreads() <= baseline + 2,
         "trade threads back near " + baseline + " (now " + tradeThreads() + ")");
   }
 
@@ -291,7 +295,7 @@ class HostileInputTest {
           stalled.add(p);
           p.send(new byte[] {0, 0, 0, 100}); // a HELLO is coming... slowly
         }
-        Deadline.await(Duration.ofSeconds(10),
+        Await.until(Duration.ofSeconds(10),
             () -> threadsNamed("trade-handshake-slowgate-") == Connector.MAX_HANDSHAKES,
             Connector.MAX_HANDSHAKES + " handshakes in progress");
         try (RawPeer extra = RawPeer.connect(gate)) {

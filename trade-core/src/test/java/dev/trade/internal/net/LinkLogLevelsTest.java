@@ -3,6 +3,7 @@ package dev.trade.internal.net;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 
 import dev.trade.TRADEContainer;
+import dev.trade.testing.Await;
 import java.time.Duration;
 import java.util.logging.Level;
 import org.junit.jupiter.api.AfterEach;
@@ -32,10 +33,10 @@ class LinkLogLevelsTest {
       TRADEContainer spoke = TRADEContainer.builder().name("spoke")
           .property("CONNECTCONTAINERS", hub.getServerAddresses().get(0)).build();
       try (spoke) {
-        Deadline.await(WAIT, () -> log.has(Level.FINE, "hub: linked to spoke")
+        Await.until(WAIT, () -> log.has(Level.FINE, "hub: linked to spoke")
             && log.has(Level.FINE, "spoke: linked to hub"), "both ends' link lines; have " + log.lines());
       }
-      Deadline.await(WAIT, () -> log.has(Level.FINE, "hub: link to spoke closed: said goodbye"),
+      Await.until(WAIT, () -> log.has(Level.FINE, "hub: link to spoke closed: said goodbye"),
           "the hub's line for the goodbye; have " + log.lines());
       assertFalse(log.has(Level.INFO, "linked to"), log.tail());
       assertFalse(log.has(Level.INFO, "link to spoke closed"), log.tail());

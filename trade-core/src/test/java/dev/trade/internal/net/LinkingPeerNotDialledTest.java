@@ -10,6 +10,7 @@ import dev.trade.internal.codec.Limits;
 import dev.trade.internal.config.Settings;
 import dev.trade.internal.discovery.LoopbackMulticast;
 import dev.trade.internal.registry.Registry;
+import dev.trade.testing.Await;
 import java.net.DatagramSocket;
 import java.net.InetAddress;
 import java.time.Duration;
@@ -51,14 +52,14 @@ class LinkingPeerNotDialledTest {
       ControlThread.block(b, release);
       try (Network a = network(p, low, "low")) {
         a.start();
-        Deadline.await(WAIT, () -> a.neighbours().contains(high.toString()),
+        Await.until(WAIT, () -> a.neighbours().contains(high.toString()),
             "low to link to high (on low's side)");
         // "high" chooses "low" as soon as it hears it, and dials it (300 ms later) unless discovery
         // counts it as linked: with its control thread blocked, only the handshake says so.
         assertFalse(b.neighbours().contains(low.toString()), "high's control thread is blocked");
         assertTrue(b.linkedOrLinking(low), "high counts the link from low under way as a link");
         release.countDown();
-        Deadline.await(WAIT, () -> b.neighbours().contains(low.toString()),
+        Await.until(WAIT, () -> b.neighbours().contains(low.toString()),
             "high to register the link once its control thread is free");
         assertFalse(log.has(Level.FINE, "closed a duplicate link"), log.tail());
       }

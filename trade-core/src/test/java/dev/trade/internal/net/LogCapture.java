@@ -13,7 +13,7 @@ import java.util.logging.SimpleFormatter;
  * another backend is installed, so a handler on the JUL logger {@code dev.trade.net} sees it all,
  * DEBUG included (JUL's {@code FINE}). Close it to remove the handler and restore the level.
  */
-final class LogCapture extends Handler implements AutoCloseable {
+public final class LogCapture extends Handler implements AutoCloseable {
   private final Logger logger = Logger.getLogger("dev.trade.net");
   private final SimpleFormatter formatter = new SimpleFormatter();
   // Guarded by this.
@@ -22,7 +22,7 @@ final class LogCapture extends Handler implements AutoCloseable {
   /** The logger's own level before; DEBUG lines (FINE) are only made while capturing. */
   private final Level before = logger.getLevel();
 
-  LogCapture() {
+  public LogCapture() {
     setLevel(Level.ALL);
     logger.setLevel(Level.ALL);
     logger.addHandler(this);
@@ -42,13 +42,13 @@ final class LogCapture extends Handler implements AutoCloseable {
   }
 
   /** The last lines, for failure messages. */
-  String tail() {
+  public String tail() {
     List<String> all = lines();
     return String.join("\n", all.subList(Math.max(0, all.size() - 12), all.size()));
   }
 
   /** Whether some line of {@code level} contains every one of {@code parts}. */
-  boolean has(Level level, String... parts) {
+  public boolean has(Level level, String... parts) {
     for (String line : lines()) {
       if (line.startsWith(level + " ") && containsAll(line, parts)) {
         return true;

@@ -7,6 +7,10 @@ import dev.trade.TRADEContainer;
 import dev.trade.TRADEService;
 import dev.trade.internal.codec.ByteSink;
 import dev.trade.internal.codec.ByteSource;
+import dev.trade.internal.net.link.Frames;
+import dev.trade.internal.net.link.Wire;
+import dev.trade.internal.net.remote.RemoteCalls;
+import dev.trade.testing.Await;
 import java.io.ByteArrayOutputStream;
 import java.net.InetSocketAddress;
 import java.time.Duration;
@@ -71,7 +75,7 @@ class ManyCallsOnOneLinkTest {
           assertEquals(Wire.FAILED_UNAVAILABLE, status, "a reply before the gate opened");
           busy++;
         }
-        Deadline.await(Duration.ofSeconds(30),
+        Await.until(Duration.ofSeconds(30),
             () -> gate.inside.get() == RemoteCalls.MAX_SERVED_PER_LINK, "the calls inside the gate");
         gate.open.countDown();
         for (int i = 0; i < RemoteCalls.MAX_SERVED_PER_LINK; i++) {

@@ -6,6 +6,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import dev.trade.TRADEContainer;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
+import dev.trade.internal.net.link.Frames;
+import dev.trade.internal.net.link.Wire;
+import dev.trade.internal.net.mesh.StateFrames;
+import dev.trade.testing.Await;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
@@ -50,7 +54,7 @@ class NotReadingPeerTest {
         // Requests for the provider's table, whose answers come to far more than loopback's
         // socket buffers (a few MB each way) hold, and are never read.
         sink.send(tableRequests(provider.getId(), 200_000));
-        Deadline.await(Duration.ofSeconds(30), () -> log.has(Level.INFO,
+        Await.until(Duration.ofSeconds(30), () -> log.has(Level.INFO,
             "provider: link to sink closed: not reading: a write has waited", "(FAILURETIMEOUT=1500)"),
             "the link closed for its stalled write, in:\n" + log.tail());
       }
@@ -79,7 +83,7 @@ class NotReadingPeerTest {
         sink.handshake("flooder");
         // 300,000 x (45 + 128) bytes held: 52 MB
         sink.send(tableRequests(provider.getId(), 300_000));
-        Deadline.await(Duration.ofSeconds(30), () -> log.has(Level.INFO,
+        Await.until(Duration.ofSeconds(30), () -> log.has(Level.INFO,
             "flooded: link to flooder closed: connection to flooder lost: flooding: more than"
             + " 16777216 bytes of its replication frames wait to be applied here"),
             "the link closed for flooding, in:\n" + log.tail());
@@ -111,7 +115,7 @@ class NotReadingPeerTest {
       assertTrue(took.compareTo(Duration.ofSeconds(15)) < 0, "close() took " + took);
       // The peer finds the connection gone when it next writes (reset), without reading.
       OutputStream out = sink.socket.getOutputStream();
-      Deadline.await(Duration.ofSeconds(10), () -> {
+      Await.until(Duration.ofSeconds(10), () -> {
         try {
           out.write(PING);
           out.flush();
@@ -120,7 +124,7 @@ class NotReadingPeerTest {
           return true;
         }
       }, "the closed container's socket to the peer is closed");
-      Deadline.await(Duration.ofSeconds(10), () -> Thread.getAllStackTraces().keySet().stream()
+      Await.until(Duration.ofSeconds(10), () -> Thread.getAllStackTraces().keySet().stream()
           .noneMatch(t -> t.getName().startsWith("trade-control-closing")
               || t.getName().equals("trade-link-stalled")),
           "the closed container's threads for the link have ended");
@@ -149,7 +153,7 @@ class NotReadingPeerTest {
    */
   private static void awaitStalledWrite(RawPeer peer, String writer) {
     long[] unread = {-1, 0};
-    Deadline.await(Duration.ofSeconds(30), () -> {
+    Await.until(Duration.ofSeconds(30), () -> {
       long now;
       try {
         now = peer.socket.getInputStream().available();

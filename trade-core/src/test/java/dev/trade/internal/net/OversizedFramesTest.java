@@ -7,10 +7,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trade.TRADEContainer;
 import dev.trade.TRADEException;
+import dev.trade.TRADESerializationException;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
-import dev.trade.TRADESerializationException;
+import dev.trade.testing.Await;
 import java.time.Duration;
 import java.util.logging.Level;
 import org.junit.jupiter.api.AfterEach;
@@ -54,7 +55,7 @@ class OversizedFramesTest {
   @BeforeEach
   void register() throws TRADEException {
     provider.registerAllServices(new Store());
-    Deadline.await(Duration.ofSeconds(10), () -> caller.getAvailableServices().size() == 3,
+    Await.until(Duration.ofSeconds(10), () -> caller.getAvailableServices().size() == 3,
         "the services at the caller");
   }
 

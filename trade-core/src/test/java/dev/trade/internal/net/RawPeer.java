@@ -1,6 +1,8 @@
 package dev.trade.internal.net;
 
 import dev.trade.TRADEContainer;
+import dev.trade.internal.net.link.Handshake;
+import dev.trade.internal.net.link.Wire;
 import java.io.DataInputStream;
 import java.io.EOFException;
 import java.io.IOException;

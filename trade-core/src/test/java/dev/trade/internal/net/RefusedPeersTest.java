@@ -8,6 +8,7 @@ import dev.trade.TRADEContainer;
 import dev.trade.TRADEException;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
+import dev.trade.testing.Await;
 import java.net.InetSocketAddress;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -70,17 +71,17 @@ class RefusedPeersTest {
   /** The visitor's own line names the gate's address; the gate's line says it refused someone. */
   private void awaitRefusalLoggedOnBothSides(String visitorReason, String gateReason) {
     String gateSocket = "/" + gateAddress.replace('@', ':');
-    Deadline.await(WAIT, () -> log.has(Level.WARNING, "handshake with " + gateSocket + " failed: "
+    Await.until(WAIT, () -> log.has(Level.WARNING, "handshake with " + gateSocket + " failed: "
         + visitorReason), "the visitor's warning; have " + log.lines());
-    Deadline.await(WAIT, () -> log.has(Level.WARNING, "refused connection from", gateReason),
+    Await.until(WAIT, () -> log.has(Level.WARNING, "refused connection from", gateReason),
         "the gate's warning; have " + log.lines());
   }
 
   private void assertNeverLinked(TRADEContainer visitor, String name) throws TRADEException {
     // A working link would have exchanged tables by now: prove it with a container that can.
     TRADEContainer friend = visitor("ally", "COPYDATAFORLOCALINVOKES", "false");
-    Deadline.await(WAIT, () -> !friend.getAvailableServices(GATE).isEmpty(), "the friend to link");
-    Deadline.await(WAIT, () -> gate.getAvailableServices(VISITOR).size() == 1,
+    Await.until(WAIT, () -> !friend.getAvailableServices(GATE).isEmpty(), "the friend to link");
+    Await.until(WAIT, () -> gate.getAvailableServices(VISITOR).size() == 1,
         "the friend's service at the gate");
     assertTrue(visitor.getAvailableServices(GATE).isEmpty(), "the gate's service reached " + name);
     assertTrue(gate.getAvailableServices(VISITOR).stream()
@@ -106,7 +107,7 @@ class RefusedPeersTest {
     try (RawPeer forger = RawPeer.connect(new InetSocketAddress(at[0], Integer.parseInt(at[1])))) {
       assertThrows(Exception.class, () -> forger.handshake("x\nSEVERE: forged", "diarcUser", "n"));
     }
-    Deadline.await(WAIT, () -> log.has(Level.WARNING, "refused connection from",
+    Await.until(WAIT, () -> log.has(Level.WARNING, "refused connection from",
         "other system id 'x?SEVERE: forged' (ours is 'diarc')"), "the gate's warning; have " + log.lines());
     assertTrue(log.lines().stream().noneMatch(l -> l.contains("\nSEVERE: forged")), log.tail());
   }

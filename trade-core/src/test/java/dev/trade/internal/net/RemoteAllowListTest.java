@@ -6,10 +6,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trade.TRADEContainer;
 import dev.trade.TRADEException;
+import dev.trade.TRADESerializationException;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
-import dev.trade.TRADESerializationException;
+import dev.trade.testing.Await;
 import java.time.Duration;
 import org.example.contraband.Parcel;
 import org.junit.jupiter.api.Test;
@@ -38,7 +39,7 @@ class RemoteAllowListTest {
             .property("CONNECTCONTAINERS", provider.getServerAddresses().get(0)).build()) {
       provider.registerAllServices(new Inspector());
       TRADEServiceConstraints describe = new TRADEServiceConstraints().name("describe");
-      Deadline.await(Duration.ofSeconds(10), () -> !caller.getAvailableServices(describe).isEmpty(),
+      Await.until(Duration.ofSeconds(10), () -> !caller.getAvailableServices(describe).isEmpty(),
           "describe() to reach the caller");
       TRADEServiceInfo service = caller.getAvailableService(describe);
       assertEquals("plain", service.call(String.class, "plain")); // the link itself works

@@ -9,8 +9,14 @@ import dev.trade.internal.codec.AllowList;
 import dev.trade.internal.codec.Codec;
 import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.codec.Limits;
+import dev.trade.internal.net.link.Frames;
+import dev.trade.internal.net.link.Wire;
+import dev.trade.internal.net.mesh.StateFrames;
+import dev.trade.internal.net.mesh.Topology;
+import dev.trade.internal.net.remote.RemoteCalls;
 import dev.trade.internal.registry.ServiceDescriptor;
 import dev.trade.internal.registry.Table;
+import dev.trade.testing.Await;
 import java.nio.ByteBuffer;
 import java.time.Duration;
 import java.util.Arrays;
@@ -52,7 +58,7 @@ class RouteDisagreementTest {
       a.send(StateFrames.links(new Topology.LinkState(far, 1, Set.of(aId, beyond))));
       a.send(StateFrames.table(tables, new Table(far, 1, List.of(new ServiceDescriptor(far, "far",
           "host", 1, "farProbe", List.of(), List.of(), "int", Set.of(), List.of())))));
-      Deadline.await(WAIT, () -> x.getAvailableServices(new TRADEServiceConstraints()
+      Await.until(WAIT, () -> x.getAvailableServices(new TRADEServiceConstraints()
           .name("farProbe")).stream().anyMatch(s -> s.getDistance() == 2), "far, through a");
 
       // a passes x a call for far, as if a's own link to far had just gone and a's view of it

@@ -7,6 +7,8 @@ import dev.trade.TRADEContainer;
 import dev.trade.TRADEException;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
+import dev.trade.internal.net.link.Wire;
+import dev.trade.testing.Await;
 import java.net.InetSocketAddress;
 import java.time.Duration;
 import java.util.logging.Level;
@@ -59,7 +61,7 @@ class SilentPeerTest {
         .property("HEARTBEATINTERVAL", "100").property("FAILURETIMEOUT", "600"));
     Duration took = silence(address, Duration.ofSeconds(20)); // a bound for a busy machine
     assertTrue(took.toMillis() >= 550, "closed after " + took.toMillis() + " ms, before FAILURETIMEOUT");
-    Deadline.await(Duration.ofSeconds(5), () -> log.has(Level.INFO,
+    Await.until(Duration.ofSeconds(5), () -> log.has(Level.INFO,
         "listener: link to mute closed: silent for", "ms (FAILURETIMEOUT=600)"), "the reason in:\n" + log.tail());
   }
 
@@ -96,10 +98,10 @@ class SilentPeerTest {
         .property("HEARTBEATINTERVAL", "100").property("FAILURETIMEOUT", "600").build()) {
       server.registerAllServices(new Arm());
       TRADEServiceConstraints open = new TRADEServiceConstraints().name("openGripper");
-      Deadline.await(Duration.ofSeconds(10), () -> !idle.getAvailableServices(open).isEmpty(), "the link");
+      Await.until(Duration.ofSeconds(10), () -> !idle.getAvailableServices(open).isEmpty(), "the link");
       // Idle for five failure timeouts, watching for the link's closure: only heartbeats cross.
       long end = System.nanoTime() + Duration.ofMillis(3_000).toNanos();
-      Deadline.await(Duration.ofSeconds(5), () -> System.nanoTime() - end > 0
+      Await.until(Duration.ofSeconds(5), () -> System.nanoTime() - end > 0
           || log.has(Level.INFO, "link to idle closed"), "3 s of idleness");
       assertFalse(log.has(Level.INFO, "link to idle closed"), log.tail());
       assertTrue(idle.getAvailableService(open).call(boolean.class, 3));

@@ -8,6 +8,8 @@ import dev.trade.TRADEContainer;
 import dev.trade.TRADEException;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
+import dev.trade.internal.net.link.LinkReferee;
+import dev.trade.testing.Await;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.ServerSocket;
@@ -45,10 +47,10 @@ class SimultaneousConnectTest {
       b.registerAllServices(new Named("twin-b"), "b");
       TRADEServiceConstraints fromA = new TRADEServiceConstraints().inGroups("a");
       TRADEServiceConstraints fromB = new TRADEServiceConstraints().inGroups("b");
-      Deadline.await(WAIT, () -> !a.getAvailableServices(fromB).isEmpty()
+      Await.until(WAIT, () -> !a.getAvailableServices(fromB).isEmpty()
           && !b.getAvailableServices(fromA).isEmpty(), "the services to cross");
       // Each link has one reader thread per side, named after the peer.
-      Deadline.await(WAIT, () -> readers("twin-b") == 1 && readers("twin-a") == 1,
+      Await.until(WAIT, () -> readers("twin-b") == 1 && readers("twin-a") == 1,
           "one link (readers in a: " + readers("twin-b") + ", in b: " + readers("twin-a") + ")");
       for (int i = 0; i < 50; i++) {
         assertEquals("twin-b", a.getAvailableService(fromB).call(String.class));
@@ -90,11 +92,11 @@ class SimultaneousConnectTest {
     UUID low = UUID.fromString("7fffffff-ffff-ffff-ffff-ffffffffffff");
     UUID high = UUID.fromString("80000000-0000-0000-0000-000000000000");
     assertTrue(low.compareTo(high) > 0);
-    assertTrue(LinkSwaps.compareIds(low, high) < 0);
-    assertTrue(LinkSwaps.compareIds(high, low) > 0);
+    assertTrue(LinkReferee.compareIds(low, high) < 0);
+    assertTrue(LinkReferee.compareIds(high, low) > 0);
     UUID lowTail = UUID.fromString("00000000-0000-0000-7fff-ffffffffffff");
     UUID highTail = UUID.fromString("00000000-0000-0000-8000-000000000000");
-    assertTrue(LinkSwaps.compareIds(lowTail, highTail) < 0);
-    assertEquals(0, LinkSwaps.compareIds(low, UUID.fromString(low.toString())));
+    assertTrue(LinkReferee.compareIds(lowTail, highTail) < 0);
+    assertEquals(0, LinkReferee.compareIds(low, UUID.fromString(low.toString())));
   }
 }

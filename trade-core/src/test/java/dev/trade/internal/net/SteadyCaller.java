@@ -1,6 +1,7 @@
 package dev.trade.internal.net;
 
 import dev.trade.TRADEServiceInfo;
+import dev.trade.testing.Await;
 import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -44,7 +45,7 @@ final class SteadyCaller implements AutoCloseable {
   /** Waits until {@code n} more calls succeed, proving the service still answers now. */
   void awaitMore(int n) {
     long target = successes() + n;
-    Deadline.await(Duration.ofSeconds(10), () -> successes() >= target || !failures.isEmpty(),
+    Await.until(Duration.ofSeconds(10), () -> successes() >= target || !failures.isEmpty(),
         n + " more successful calls");
     assertNoFailures();
   }

@@ -11,6 +11,7 @@ import dev.trade.TRADEInvocationException;
 import dev.trade.TRADESerializationException;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
+import dev.trade.testing.Await;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
@@ -54,7 +55,7 @@ class UnequalFrameLimitsTest {
   private static TRADEServiceInfo service(TRADEContainer caller, String name)
       throws TRADEException {
     TRADEServiceConstraints all = new TRADEServiceConstraints().inGroups("store");
-    Deadline.await(Duration.ofSeconds(10), () -> caller.getAvailableServices(all).size() == 3,
+    Await.until(Duration.ofSeconds(10), () -> caller.getAvailableServices(all).size() == 3,
         "the store's services at " + caller.getName());
     return caller.getAvailableService(new TRADEServiceConstraints().name(name));
   }

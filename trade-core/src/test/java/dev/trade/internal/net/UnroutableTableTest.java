@@ -11,8 +11,12 @@ import dev.trade.internal.codec.ByteSource;
 import dev.trade.internal.codec.Codec;
 import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.codec.Limits;
+import dev.trade.internal.net.link.Wire;
+import dev.trade.internal.net.mesh.StateFrames;
+import dev.trade.internal.net.mesh.Topology;
 import dev.trade.internal.registry.ServiceDescriptor;
 import dev.trade.internal.registry.Table;
+import dev.trade.testing.Await;
 import java.net.InetSocketAddress;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -100,7 +104,7 @@ class UnroutableTableTest {
     assertEquals(2, askForFarTable().version(), "the table and its delta were kept");
     assertEquals(0, listed("farProbe"), "listed without a route to its container");
     connectFar(2, 1);
-    Deadline.await(Duration.ofSeconds(5), () -> listed("farProbe") == 1 && listed("farGauge") == 1,
+    Await.until(Duration.ofSeconds(5), () -> listed("farProbe") == 1 && listed("farGauge") == 1,
         "the far services once routable");
     assertFalse(log.has(Level.INFO, "left or is not reachable"), log.tail());
   }
@@ -137,11 +141,11 @@ class UnroutableTableTest {
   void theTableOfAContainerLostIsNotGivenToNewcomers() throws Exception {
     connectFar(2, 1);
     peer.send(StateFrames.table(tables, new Table(far, 1, List.of(service(1, "farProbe")))));
-    Deadline.await(Duration.ofSeconds(5), () -> listed("farProbe") == 1, "the far service");
+    Await.until(Duration.ofSeconds(5), () -> listed("farProbe") == 1, "the far service");
     List<String> before = linkUpExchange(true);
     assertTrue(before.contains("TABLE " + far), "given while reachable: " + before);
     peer.send(StateFrames.links(new Topology.LinkState(me, 3, Set.of(provider.getId()))));
-    Deadline.await(Duration.ofSeconds(5), () -> listed("farProbe") == 0, "the far service gone");
+    Await.until(Duration.ofSeconds(5), () -> listed("farProbe") == 0, "the far service gone");
     for (boolean digests : new boolean[] {true, false}) {
       List<String> given = linkUpExchange(digests);
       assertTrue(given.contains("LINKS " + me), "the exchange was read: " + given);
@@ -155,12 +159,12 @@ class UnroutableTableTest {
   void aContainerCutOffForAMomentIsListedAgainWithoutItsTable() throws Exception {
     connectFar(2, 1);
     peer.send(StateFrames.table(tables, new Table(far, 1, List.of(service(1, "farProbe")))));
-    Deadline.await(Duration.ofSeconds(5), () -> listed("farProbe") == 1, "the far service");
+    Await.until(Duration.ofSeconds(5), () -> listed("farProbe") == 1, "the far service");
     peer.send(StateFrames.links(new Topology.LinkState(me, 3, Set.of(provider.getId()))));
-    Deadline.await(Duration.ofSeconds(5), () -> listed("farProbe") == 0, "the far service gone");
+    Await.until(Duration.ofSeconds(5), () -> listed("farProbe") == 0, "the far service gone");
     assertEquals(1, askForFarTable().version(), "the table is kept");
     // Back, with a newer state of its own (a container that went away is held down until then).
     connectFar(4, 2);
-    Deadline.await(Duration.ofSeconds(5), () -> listed("farProbe") == 1, "the far service again");
+    Await.until(Duration.ofSeconds(5), () -> listed("farProbe") == 1, "the far service again");
   }
 }

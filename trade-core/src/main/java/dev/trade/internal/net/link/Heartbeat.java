@@ -1,0 +1,154 @@
+package dev.trade.internal.net.link;
+
+import java.io.IOException;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.List;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * Keeps links alive and finds silent peers: every {@code HEARTBEATINTERVAL} each link that sent
+ * nothing for half that long sends a PING (so an idle link carries one per interval), and a link
+ * that received nothing for {@code FAILURETIMEOUT} is closed. A closed or reset socket is noticed
+ * at once by the link's reader; this catches the silent cases (a frozen process, a pulled cable).
+ * A link whose write has waited for {@code FAILURETIMEOUT} is closed too: its peer does not read
+ * (stuck, or hostile while it goes on pinging), and every thread that sends over the link, callers
+ * and the control thread among them, would otherwise wait for it for good; closing the socket ends
+ * the write with an exception.
+ *
+ * <p>Silence is judged only while this container itself runs on time: a beat that comes more than
+ * half an interval late means this process was stalled (a long GC pause, a suspended VM, an
+ * overloaded host), and the frames its peers sent meanwhile still wait unread in the socket
+ * buffers. Every link then gets a full {@code FAILURETIMEOUT} from the end of the stall, so that
+ * a pause here never closes the links of healthy peers. Thread-safe: beats run on the timer.
+ */
+public final class Heartbeat {
+  private static final byte[] PING = Frames.finish(Frames.start(Wire.PING, 0));
+
+  private final Collection<Link> links;
+  private final long interval;
+  private final long silence;
+  private final ScheduledExecutorService timer;
+  private final ExecutorService workers;
+  // Timer thread only.
+  private long lastBeat;
+  /** When the last stall of this process ended (nanoTime); silence counts from there at most. */
+  private volatile long resumed;
+
+  /** @param links the live links, read at every beat */
+  public Heartbeat(Collection<Link> links, Duration interval, Duration silence,
+      ScheduledExecutorService timer, ExecutorService workers) {
+    this.links = links;
+    this.interval = interval.toNanos();
+    this.silence = silence.toNanos();
+    this.timer = timer;
+    this.workers = workers;
+  }
+
+  /**
+   * Pings a link that just came up, at once: its peer counts silence from the handshake on, while
+   * this side's first beat for it may be one and a half intervals away and its first other frames
+   * wait for the control thread. Without it, a new link had the least slack of all against a
+   * stall of this process. Called on the thread that made the link; never blocks on a new link.
+   */
+  public static void greet(Link l) {
+    try {
+      l.send(PING);
+    } catch (IOException e) {
+      // send() closed the link; its reader reports it.
+    }
+  }
+
+  public void start() {
+    started(System.nanoTime());
+    timer.scheduleAtFixedRate(() -> beat(System.nanoTime()), interval, interval,
+        TimeUnit.NANOSECONDS);
+  }
+
+  /**
+   * Counts beats from {@code now} (nanoTime), without scheduling any: {@link #start} does both;
+   * tests that pass their own times to {@link #beat} call this alone.
+   */
+  void started(long now) {
+    lastBeat = now;
+    resumed = now;
+  }
+
+  /** One beat at {@code now} (nanoTime); package-private for tests, which pass their own times. */
+  void beat(long now) {
+    if (now - lastBeat > interval + interval / 2) {
+      resumed = now;
+    }
+    lastBeat = now;
+    List<Link> idle = null;
+    for (Link l : links) {
+      long writing = l.output.writingSince();
+      if (writing != 0 && now - Math.max(writing, resumed) >= silence) {
+        l.close("not reading: a write has waited " + TimeUnit.NANOSECONDS.toMillis(now - writing)
+            + " ms (FAILURETIMEOUT=" + TimeUnit.NANOSECONDS.toMillis(silence) + ")");
+        continue;
+      }
+      long quiet = now - Math.max(l.lastReceived, resumed);
+      if (quiet >= silence) {
+        closeSilent(l, now - l.lastReceived);
+        continue;
+      }
+      if (silence - quiet < interval) {
+        // It would pass FAILURETIMEOUT before the next beat: look again exactly then, so that a
+        // silent peer is declared gone after FAILURETIMEOUT, not up to one interval later.
+        timer.schedule(() -> checkSilence(l), silence - quiet, TimeUnit.NANOSECONDS);
+      }
+      if (now - l.lastSent >= interval / 2 && !l.pinging) {
+        if (idle == null) {
+          idle = new ArrayList<>();
+        }
+        l.pinging = true; // here, not on the worker: a ping still queued is not sent twice
+        idle.add(l);
+      }
+    }
+    if (idle != null) {
+      ping(idle);
+    }
+  }
+
+  /**
+   * Pings on one worker, not on the timer: a ping that finds a peer's socket buffer full blocks
+   * until the peer reads or the link closes, and the timer must go on beating for every other
+   * link. A link whose ping still blocks is skipped by later beats, which ping the others on
+   * another worker. One task per beat, not one per link: hundreds of links would otherwise start
+   * as many threads.
+   */
+  private void ping(List<Link> idle) {
+    try {
+      workers.execute(() -> {
+        for (Link l : idle) {
+          try {
+            l.send(PING);
+          } catch (IOException e) {
+            // The link is closing; its reading reports why.
+          } finally {
+            l.pinging = false;
+          }
+        }
+      });
+    } catch (RejectedExecutionException e) {
+      // The container is closing.
+    }
+  }
+
+  private void checkSilence(Link l) {
+    long now = System.nanoTime();
+    if (!l.isClosed() && now - Math.max(l.lastReceived, resumed) >= silence) {
+      closeSilent(l, now - l.lastReceived);
+    }
+  }
+
+  private void closeSilent(Link l, long quietNanos) {
+    l.close("silent for " + TimeUnit.NANOSECONDS.toMillis(quietNanos) + " ms (FAILURETIMEOUT="
+        + TimeUnit.NANOSECONDS.toMillis(silence) + ")");
+  }
+}

@@ -1,0 +1,366 @@
+package dev.trade.internal.net.remote;
+
+import dev.trade.TRADEBadArgumentsException;
+import dev.trade.TRADEException;
+import dev.trade.TRADEInvocationException;
+import dev.trade.TRADESerializationException;
+import dev.trade.TRADEServiceUnavailableException;
+import dev.trade.TRADETimeoutException;
+import dev.trade.internal.call.CallContext;
+import dev.trade.internal.call.CallErrors;
+import dev.trade.internal.call.Provider;
+import dev.trade.internal.codec.ByteSink;
+import dev.trade.internal.codec.ByteSource;
+import dev.trade.internal.codec.Codec;
+import dev.trade.internal.net.link.Frames;
+import dev.trade.internal.net.link.Link;
+import dev.trade.internal.net.link.ReplyWait;
+import dev.trade.internal.net.link.ServedCalls;
+import dev.trade.internal.net.link.Wire;
+import dev.trade.internal.registry.ServiceDescriptor;
+import java.io.IOException;
+import java.lang.System.Logger.Level;
+import java.lang.System.Logger;
+import java.util.Map;
+import java.util.UUID;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Predicate;
+
+/**
+ * Remote calls over links: the calling side (request ids, pending replies, deadlines), and
+ * forwarding of calls and replies between containers that have no direct link. The providing side
+ * is {@link CallServer}; replies find their way back to the caller through {@link ReplySender}.
+ *
+ * <p>A link's reading thread serves the calls it reads and completes the futures of replies; a
+ * {@link ReadWatch} keeps the link read while a call takes long, so one slow service never stalls
+ * a connection. This class is safe for concurrent use.
+ */
+public final class RemoteCalls {
+  private static final Logger LOG = System.getLogger("dev.trade.net");
+  /** The longest text of a failure reply that callers read, in bytes of UTF-8. */
+  static final int MAX_TEXT = 64 * 1024;
+  /**
+   * The most calls of one link served at once by threads other than the one reading it (each a
+   * thread); a call read beyond them is answered "not available now" at once. A neighbour that
+   * sends calls faster than they end, to a slow service, would otherwise start threads without
+   * bound; this way the link goes on being read (a link not read is soon closed as silent).
+   */
+  public static final int MAX_SERVED_PER_LINK = 512;
+  private static final int MAX_IDS = 4096;
+  /**
+   * How many times a CALL whose next hop is the neighbour it came from waits for routes to settle
+   * (10, 20, 40, 80 and 160 ms: 310 ms in all) before it is passed back all the same.
+   */
+  static final int ROUTE_WAITS = 5;
+
+  /** Finds the link a frame for a container leaves by. */
+  public interface Router {
+    /** The link towards {@code container}, or null when it is not reachable. */
+    Link nextHop(UUID container);
+  }
+
+  /** A call sent and not answered yet, until {@code deadline} (nanoTime). */
+  record Pending(CompletableFuture<byte[]> reply, UUID destination, UUID via, long deadline,
+      ServiceDescriptor service, long timeoutNanos) {
+    /** What the caller gets when the deadline passed. */
+    TRADETimeoutException timedOut() {
+      return CallErrors.timedOut(service, timeoutNanos, "");
+    }
+  }
+
+  private final UUID self;
+  private final Codec codec;
+  private final Router router;
+  private final ReplySender replies;
+  private final CallServer serving;
+  private final int maxFrame;
+  private final AtomicLong nextId = new AtomicLong();
+  private final Map<Long, Pending> pending = new ConcurrentHashMap<>();
+  /** Parsed container ids of the services called (parsing one costs more than a lookup). */
+  private final Map<String, UUID> containerIds = new ConcurrentHashMap<>();
+  private final ReplyWait replyWait = new ReplyWait();
+  private final Deadlines deadlines;
+  private final ScheduledExecutorService timer;
+
+  /** @param maxFrame the largest frame (after its length field) that peers accept: MAXFRAMESIZE */
+  public RemoteCalls(UUID self, Codec codec, Router router, Provider host,
+      ScheduledExecutorService timer, int maxFrame) {
+    this.self = self;
+    this.codec = codec;
+    this.router = router;
+    this.replies = new ReplySender(self, router, timer, maxFrame);
+    this.serving = new CallServer(self, codec, host, replies, maxFrame);
+    this.maxFrame = maxFrame;
+    this.deadlines = new Deadlines(timer, pending);
+    this.timer = timer;
+  }
+
+  /** Calls a service of another container and waits for its reply until the deadline. */
+  public Object call(ServiceDescriptor d, Object[] args, CallContext context, long deadlineNanos,
+      ClassLoader loader) throws TRADEException {
+    UUID destination = containerIds.get(d.containerId());
+    if (destination == null) {
+      if (containerIds.size() >= MAX_IDS) {
+        containerIds.clear(); // ids of containers long gone; the live ones come back at once
+      }
+      destination = UUID.fromString(d.containerId());
+      containerIds.put(d.containerId(), destination);
+    }
+    Link link = router.nextHop(destination);
+    if (link == null) {
+      throw CallErrors.gone(d, "its container is not reachable");
+    }
+    long id = nextId.incrementAndGet();
+    long sent = System.nanoTime();
+    long remaining = deadlineNanos - sent;
+    byte[] frame = callFrame(destination, id, d.serviceId(),
+        (int) Math.min(Integer.MAX_VALUE, Math.max(1, TimeUnit.NANOSECONDS.toMillis(remaining))), args,
+        context);
+    if (!Frames.fits(frame, link.sendLimit)) {
+      // Each value fits its limit, but not the call as a whole; the peer would drop the link.
+      throw new TRADESerializationException("Cannot call " + d.signature() + ": its arguments need "
+          + (frame.length - 4) + " bytes, more than " + ReplySender.limitOf(link, maxFrame));
+    }
+    if (!link.output.hasRoom()) {
+      awaitRoom(link, d, deadlineNanos, remaining);
+    }
+    Pending p = new Pending(new CompletableFuture<>(), destination, link.peerId, deadlineNanos, d,
+        remaining);
+    pending.put(id, p);
+    deadlines.watch();
+    // A service calling out while it is served on a link's reading thread: the reply may come over
+    // that link, so it must go on being read.
+    ServedCalls.releaseReading();
+    // Before sending: the link's thread must know a caller may read the reply before it comes.
+    boolean borrowed = replyWait.borrow(link);
+    boolean sentOk = false;
+    try {
+      link.send(frame);
+      if (link.isClosed()) { // closed between lookup and registration: nobody will fail us
+        throw new IOException("link closed");
+      }
+      sentOk = true;
+    } catch (IOException e) {
+      pending.remove(id);
+      throw CallErrors.gone(d, "the connection to its container was lost");
+    } finally {
+      if (!sentOk) {
+        replyWait.abandon(link, borrowed);
+      }
+    }
+    byte[] reply;
+    try {
+      reply = replyWait.await(link, borrowed, p.reply, sent);
+    } catch (ExecutionException e) {
+      throw (TRADEException) e.getCause();
+    } catch (InterruptedException e) {
+      pending.remove(id);
+      Thread.currentThread().interrupt();
+      throw new TRADEException("Interrupted while waiting for " + d.signature());
+    }
+    return decodeReply(d, reply, loader);
+  }
+
+  /**
+   * Waits while the link holds {@link LinkOutput#ROOM} bytes or more not yet written: its peer
+   * takes them slower than calls are made, and the caller waits for it rather than the queue
+   * growing without bound; until the call's deadline.
+   */
+  private static void awaitRoom(Link link, ServiceDescriptor d, long deadline, long timeout)
+      throws TRADEException {
+    try {
+      if (!link.output.awaitRoom(deadline, link::isClosed)) {
+        throw CallErrors.timedOut(d, timeout, ": the call waited all that time to be sent, behind "
+            + link.output.queuedBytes() + " bytes that " + link.peerName
+            + " takes slower than they are sent");
+      }
+    } catch (InterruptedException e) {
+      Thread.currentThread().interrupt();
+      throw new TRADEException("Interrupted while waiting to send a call to " + d.signature());
+    }
+  }
+
+  /** A CALL frame (header included) for a service of {@code destination}. */
+  public byte[] callFrame(UUID destination, long requestId, long serviceId, int timeoutMs, Object[] args)
+      throws TRADESerializationException {
+    return callFrame(destination, requestId, serviceId, timeoutMs, args, CallContext.EMPTY);
+  }
+
+  /** A CALL frame (header included) for a service of {@code destination}, with a context. */
+  public byte[] callFrame(UUID destination, long requestId, long serviceId, int timeoutMs, Object[] args,
+      CallContext context) throws TRADESerializationException {
+    ByteSink out = Frames.start(Wire.CALL, 64);
+    Frames.writeRouting(out, self, destination, Wire.MAX_HOPS);
+    out.writeLong(requestId);
+    out.writeLong(serviceId);
+    out.writeInt(timeoutMs);
+    out.writeVarUInt(args.length);
+    for (Object a : args) {
+      codec.write(a, out);
+    }
+    ContextCoding.write(context, out);
+    return Frames.finish(out);
+  }
+
+  private Object decodeReply(ServiceDescriptor d, byte[] payload, ClassLoader loader)
+      throws TRADEException {
+    ByteSource in = ByteSource.of(payload, Frames.ROUTING + 8, payload.length - Frames.ROUTING - 8);
+    int status = in.readUnsignedByte();
+    switch (status) {
+      case Wire.OK:
+        return codec.read(in, loader);
+      case Wire.FAILED_INVOCATION:
+        Object t = codec.read(in, loader);
+        Throwable cause = t instanceof Throwable ? (Throwable) t : null;
+        throw new TRADEInvocationException("Service " + d.signature() + " threw "
+            + (cause == null ? "an exception" : cause.toString()), cause);
+      case Wire.FAILED_UNAVAILABLE:
+        throw new TRADEServiceUnavailableException(in.readText(MAX_TEXT));
+      case Wire.FAILED_BAD_ARGUMENTS:
+        throw new TRADEBadArgumentsException(in.readText(MAX_TEXT));
+      case Wire.FAILED_SERIALIZATION:
+        throw new TRADESerializationException(in.readText(MAX_TEXT));
+      case Wire.FAILED_TIMEOUT:
+        throw new TRADETimeoutException(in.readText(MAX_TEXT));
+      default:
+        throw new TRADEException(in.readText(MAX_TEXT));
+    }
+  }
+
+  /**
+   * A CALL frame arrived over {@code from} (its reading thread), which serves it itself: the call
+   * runs without waiting for another thread to wake up, and the link goes on being read elsewhere
+   * if it takes long (see {@link ReadWatch}).
+   *
+   * @return true if this thread still reads {@code from}
+   */
+  public boolean onCall(Link from, byte[] payload) {
+    UUID destination = Frames.destination(payload);
+    if (!destination.equals(self)) {
+      // Passing a frame on writes to another link, which can block (its peer slow or not
+      // reading): like a call served here, the link it came over is read elsewhere meanwhile.
+      return from.serveHere(() -> forward(from, Wire.CALL, payload, destination, 0));
+    }
+    if (from.servedElsewhere() >= MAX_SERVED_PER_LINK) {
+      replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, CallErrors.notNowText("container "
+          + self + " serves " + MAX_SERVED_PER_LINK + " calls from this link at once already"));
+      return true;
+    }
+    return from.serveHere(() -> serving.serve(from, payload));
+  }
+
+  /**
+   * Whether {@code frame} (header included) is a CALL made here whose caller has given up on it
+   * (its deadline passed, or it failed): a congested link need not carry it any more, and its
+   * service should not run long after its caller went on without it.
+   */
+  public boolean abandoned(byte[] frame) {
+    int at = Wire.HEADER;
+    return Frames.isCall(frame)
+        && Frames.getLong(frame, at) == self.getMostSignificantBits()
+        && Frames.getLong(frame, at + 8) == self.getLeastSignificantBits()
+        && !pending.containsKey(Frames.getLong(frame, at + Frames.ROUTING));
+  }
+
+  /**
+   * A REPLY frame arrived over {@code from} (its reading thread).
+   *
+   * @return true if this thread still reads {@code from}
+   */
+  public boolean onReply(Link from, byte[] payload) {
+    UUID destination = Frames.destination(payload);
+    if (!destination.equals(self)) {
+      return from.serveHere(() -> forward(null, Wire.REPLY, payload, destination, 0)); // see onCall
+    }
+    long id = Frames.requestId(payload);
+    Pending p = pending.remove(id);
+    if (p != null) {
+      p.reply.complete(payload);
+    }
+    return true;
+  }
+
+  /**
+   * @param from the link a CALL came in on (for its failure reply); null for a REPLY
+   * @param waits how many times the CALL waited for routes to settle already
+   */
+  private void forward(Link from, int type, byte[] payload, UUID destination, int waits) {
+    if (type == Wire.REPLY) {
+      if (Frames.hops(payload) > 1) {
+        replies.deliver(destination, Frames.forwarded(type, payload), 0);
+      }
+      return;
+    }
+    Link next = router.nextHop(destination);
+    if (next == from && waits < ROUTE_WAITS && Frames.spendCallTime(payload, 10 << waits)) {
+      // The neighbour that passed the call here has this container on its shortest path to the
+      // destination, and this container has it on its own: their link states disagree for the
+      // moment (a link just came or went). Passed back, the call would go round until its hops ran
+      // out; it waits for routes to settle instead, as a reply does (ReplySender#deliver), and the
+      // wait counts against its timeout.
+      try {
+        timer.schedule(() -> forward(from, type, payload, destination, waits + 1), 10 << waits,
+            TimeUnit.MILLISECONDS);
+        return;
+      } catch (RejectedExecutionException closing) {
+        // Passed back below, or failed.
+      }
+    }
+    if (next == null || Frames.hops(payload) <= 1) {
+      LOG.log(Level.DEBUG, "dropping frame for unreachable {0}", destination);
+      if (type == Wire.CALL) {
+        replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, CallErrors.goneText("container "
+            + destination + " is not reachable from " + self));
+      }
+      return;
+    }
+    byte[] frame = Frames.forwarded(type, payload);
+    if (!next.output.hasRoom()) {
+      // A reading thread must not wait for room: it would stop reading the link the call came on.
+      replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, CallErrors.notNowText("the link from "
+          + self + " to " + next.peerName + " holds " + next.output.queuedBytes()
+          + " bytes that it takes slower than they are sent"));
+      return;
+    }
+    if (!Frames.fits(frame, next.sendLimit)) {
+      replies.reply(from, payload, Wire.FAILED_SERIALIZATION, "Cannot pass the call on from "
+          + self + ": it needs " + (frame.length - 4) + " bytes, more than "
+          + ReplySender.limitOf(next, maxFrame));
+      return;
+    }
+    try {
+      next.passOn(frame);
+    } catch (IOException e) {
+      if (type == Wire.CALL) {
+        replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, CallErrors.goneText("the route to container "
+            + destination + " was lost"));
+      }
+    }
+  }
+
+  /** Fails at once every call waiting on {@code container} (it left or became unreachable). */
+  public void failTo(UUID container, String why) {
+    fail(p -> p.destination.equals(container), why);
+  }
+
+  /** Fails at once every call that left through the link to {@code neighbour}. */
+  public void failVia(UUID neighbour, String why) {
+    fail(p -> p.via.equals(neighbour), why);
+  }
+
+  /** Fails every waiting call (the container closes). */
+  public void failAll(String why) {
+    fail(p -> true, why);
+  }
+
+  private void fail(Predicate<Pending> which, String why) {
+    pending.values().removeIf(p -> which.test(p) && p.reply.completeExceptionally(
+        new TRADEServiceUnavailableException(CallErrors.goneText(why))));
+  }
+}
