@@ -1,6 +1,5 @@
 package dev.trade;
 
-import java.lang.annotation.Annotation;
 import java.util.Collection;
 
 /**
@@ -22,6 +21,12 @@ import java.util.Collection;
  * }</pre>
  */
 public final class TRADE {
+  /**
+   * The date (ISO 8601) of the last change to the API this class offers, as TRADE publishes the
+   * date of its build: code can log which API it runs against.
+   */
+  public static final String lastmodified = "2026-12-04";
+
   private static final Object LOCK = new Object();
   private static volatile TRADEContainer defaultContainer;
 
@@ -125,7 +130,7 @@ public final class TRADE {
 
   /** See {@link TRADEContainer#getAvailableServices(Class, TRADEServiceConstraints)}. */
   public static Collection<TRADEServiceInfo> getAvailableServices(
-      Class<? extends Annotation> annotation, TRADEServiceConstraints constraints) {
+      Class<?> annotation, TRADEServiceConstraints constraints) {
     return getDefaultContainer().getAvailableServices(annotation, constraints);
   }
 }

@@ -153,10 +153,23 @@ public final class TRADEContainer implements AutoCloseable {
     return bindAll(core.registry().find(c.requiredName(), c.toQuery()), null);
   }
 
-  /** Every service matching {@code constraints} whose method carries {@code annotation}. */
+  /**
+   * Every service matching {@code constraints} (null: all) whose method, or a declaration it
+   * overrides, carries {@code annotation}, in preference order; maybe none. Services of other
+   * containers are included when this JVM knows the annotation's class (which it does, since the
+   * caller names it): their annotations travel with their descriptions.
+   *
+   * @param annotation an annotation type, such as DIARC's {@code Action.class}
+   * @throws IllegalArgumentException if {@code annotation} is not an annotation type
+   */
   public Collection<TRADEServiceInfo> getAvailableServices(
-      Class<? extends Annotation> annotation, TRADEServiceConstraints constraints) {
+      Class<?> annotation, TRADEServiceConstraints constraints) {
     Objects.requireNonNull(annotation, "annotation == null");
+    if (!annotation.isAnnotation()) {
+      throw new IllegalArgumentException("getAvailableServices(annotation, constraints): "
+          + annotation.getName() + " is not an annotation type; pass the class of an annotation,"
+          + " such as TRADEService.class");
+    }
     checkOpen();
     TRADEServiceConstraints c = constraints == null ? new TRADEServiceConstraints() : constraints;
     return bindAll(core.registry().find(c.requiredName(), c.toQuery()), annotation);
@@ -284,7 +297,7 @@ public final class TRADEContainer implements AutoCloseable {
     return new TRADEServiceInfo(d, core);
   }
 
-  private List<TRADEServiceInfo> bindAll(List<Entry> entries, Class<? extends Annotation> annotation) {
+  private List<TRADEServiceInfo> bindAll(List<Entry> entries, Class<?> annotation) {
     List<TRADEServiceInfo> infos = new ArrayList<>(entries.size());
     for (Entry e : entries) {
       if (annotation == null || hasAnnotation(e.descriptor(), annotation)) {
@@ -294,7 +307,7 @@ public final class TRADEContainer implements AutoCloseable {
     return infos;
   }
 
-  private static boolean hasAnnotation(ServiceDescriptor d, Class<? extends Annotation> type) {
+  private static boolean hasAnnotation(ServiceDescriptor d, Class<?> type) {
     for (Annotation a : d.annotations()) {
       if (a.annotationType() == type) {
         return true;
