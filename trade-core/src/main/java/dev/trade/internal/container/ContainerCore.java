@@ -17,6 +17,7 @@ import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.codec.Limits;
 import dev.trade.internal.config.Settings;
 import dev.trade.internal.net.Network;
+import dev.trade.internal.registry.DeclaredTypes;
 import dev.trade.internal.registry.Entry;
 import dev.trade.internal.registry.LocalService;
 import dev.trade.internal.registry.Registry;
@@ -29,6 +30,7 @@ import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.UUID;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -46,6 +48,8 @@ public final class ContainerCore implements ServiceCaller {
 
   private record Resolved(ClassLoader loader, Class<?> type) {}
 
+  private record Declared(ClassLoader loader, Set<String> names) {}
+
   private final UUID uuid = UUID.randomUUID();
   private final String id = uuid.toString();
   private final String name;
@@ -62,6 +66,8 @@ public final class ContainerCore implements ServiceCaller {
   private volatile Network network;
   /** Declared return types of services called from here, by type name; see declaredReturnType. */
   private final Map<String, Resolved> returnTypes = new ConcurrentHashMap<>();
+  /** What remote services' signatures declare, by generic return and exception type names. */
+  private final Map<String, Declared> declaredTypes = new ConcurrentHashMap<>();
   private volatile boolean closed;
 
   /**
@@ -256,7 +262,27 @@ public final class ContainerCore implements ServiceCaller {
       throw new TRADEBadArgumentsException("Service " + d.signature() + " takes "
           + d.parameterTypeNames().size() + " arguments but got " + normalized.length);
     }
-    return Returns.convert(d, returnType, n.call(d, normalized, deadline, loader));
+    return Returns.convert(d, returnType,
+        n.call(d, normalized, deadline, loader, declaredTypes(d, loader)));
+  }
+
+  /**
+   * The classes the service's return and exception types declare, as far as {@code loader} knows
+   * them ({@link DeclaredTypes}): its replies may hold them without the allow-list naming them.
+   */
+  private Set<String> declaredTypes(ServiceDescriptor d, ClassLoader loader) {
+    // Walking the classes on every call would cost more than the call's own preparation.
+    String key = d.genericReturnTypeName() + " throws " + d.exceptionTypeNames();
+    Declared known = declaredTypes.get(key);
+    if (known != null && known.loader == loader) {
+      return known.names;
+    }
+    Set<String> names = DeclaredTypes.of(d.genericReturnTypeName(), d.exceptionTypeNames(), loader);
+    if (declaredTypes.size() >= MAX_RESOLVED) {
+      declaredTypes.clear(); // names come from peers' tables: bounded, not trusted
+    }
+    declaredTypes.put(key, new Declared(loader, names));
+    return names;
   }
 
   /** The service's declared return type as {@code loader} sees it, or null if it cannot. */
@@ -298,10 +324,11 @@ public final class ContainerCore implements ServiceCaller {
     }
     Object[] copies = new Object[args.length];
     for (int i = 0; i < args.length; i++) {
-      copies[i] = copier.copy(args[i], providerLoader);
+      copies[i] = copier.copy(args[i], providerLoader, s.declaredTypes());
     }
     Object result = hostChain.call(Invocation.local(d, copies, timeout));
-    return Returns.convert(d, returnType, copier.copy(result, callerLoader(returnType)));
+    return Returns.convert(d, returnType,
+        copier.copy(result, callerLoader(returnType), s.declaredTypes()));
   }
 
   /** Deregisters everything and stops; idempotent. */

@@ -225,10 +225,13 @@ public final class Network implements AutoCloseable {
     return dialled.size();
   }
 
-  /** Calls a remote service; see {@code ServiceCaller}. */
-  public Object call(ServiceDescriptor d, Object[] args, long deadlineNanos, ClassLoader loader)
-      throws TRADEException {
-    return calls.call(d, args, deadlineNanos, loader);
+  /**
+   * Calls a remote service; see {@code ServiceCaller}. The reply is decoded in {@code loader},
+   * also allowing the classes named in {@code declared} (those the service's signature declares).
+   */
+  public Object call(ServiceDescriptor d, Object[] args, long deadlineNanos, ClassLoader loader,
+      Set<String> declared) throws TRADEException {
+    return calls.call(d, args, deadlineNanos, loader, declared);
   }
 
   private Link nextHop(UUID container) {

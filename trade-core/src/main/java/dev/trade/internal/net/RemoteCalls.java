@@ -15,6 +15,7 @@ import java.io.IOException;
 import java.lang.System.Logger;
 import java.lang.System.Logger.Level;
 import java.util.Map;
+import java.util.Set;
 import java.util.UUID;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
@@ -97,8 +98,8 @@ final class RemoteCalls {
   }
 
   /** Calls a service of another container and waits for its reply until the deadline. */
-  Object call(ServiceDescriptor d, Object[] args, long deadlineNanos, ClassLoader loader)
-      throws TRADEException {
+  Object call(ServiceDescriptor d, Object[] args, long deadlineNanos, ClassLoader loader,
+      Set<String> declared) throws TRADEException {
     UUID destination = containerIds.get(d.containerId());
     if (destination == null) {
       if (containerIds.size() >= MAX_IDS) {
@@ -158,7 +159,7 @@ final class RemoteCalls {
       Thread.currentThread().interrupt();
       throw new TRADEException("Interrupted while waiting for " + d.signature());
     }
-    return decodeReply(d, reply, loader);
+    return decodeReply(d, reply, loader, declared);
   }
 
   /**
@@ -197,15 +198,15 @@ final class RemoteCalls {
     return Frames.finish(out);
   }
 
-  private Object decodeReply(ServiceDescriptor d, byte[] payload, ClassLoader loader)
-      throws TRADEException {
+  private Object decodeReply(ServiceDescriptor d, byte[] payload, ClassLoader loader,
+      Set<String> declared) throws TRADEException {
     ByteSource in = ByteSource.of(payload, Frames.ROUTING + 8, payload.length - Frames.ROUTING - 8);
     int status = in.readUnsignedByte();
     switch (status) {
       case Wire.OK:
-        return codec.read(in, loader);
+        return codec.read(in, loader, declared);
       case Wire.FAILED_INVOCATION:
-        Object t = codec.read(in, loader);
+        Object t = codec.read(in, loader, declared);
         Throwable cause = t instanceof Throwable ? (Throwable) t : null;
         throw new TRADEInvocationException("Service " + d.signature() + " threw "
             + (cause == null ? "an exception" : cause.toString()), cause);

@@ -65,7 +65,8 @@ final class Serving {
       ClassLoader loader = s.target().getClass().getClassLoader();
       Object[] args = new Object[count];
       for (int i = 0; i < count; i++) {
-        args[i] = codec.read(in, loader == null ? ClassLoader.getSystemClassLoader() : loader);
+        args[i] = codec.read(in, loader == null ? ClassLoader.getSystemClassLoader() : loader,
+            s.declaredTypes());
       }
       long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
       Object result = host.invoke(new Invocation(d, args, deadline));
