@@ -1,6 +1,7 @@
 package dev.trade;
 
 import dev.trade.internal.codec.InfoBinding;
+import dev.trade.internal.config.LoggingConfig;
 import dev.trade.internal.config.Settings;
 import dev.trade.internal.container.ContainerCore;
 import dev.trade.internal.notify.Notifications;
@@ -347,12 +348,18 @@ public final class TRADEContainer implements AutoCloseable {
     /**
      * Starts over from the configuration TRADE would load for the default container: the file named
      * by the system property {@code trade.properties.path}, else by the environment variable
-     * {@code TRADE_PROPERTIES_PATH}, else {@code trade.properties} on the class path, else the
-     * defaults.
+     * {@code TRADE_PROPERTIES_PATH}, else {@code trade.properties} in the working directory, else
+     * {@code trade.properties} on the class path, else the defaults. Also applies TRADE's logging
+     * file, as TRADE does: the one named by the system property {@code tradeLogging.config.path},
+     * else by the environment variable {@code TRADE_LOGGING_CONFIG_PATH}, else
+     * {@code tradeLogging.config} in the working directory (merged into the JVM's
+     * {@code java.util.logging} configuration, once per file). See docs/configuration.md.
      *
-     * @throws IllegalArgumentException if that configuration is invalid (the message names the key)
+     * @throws IllegalArgumentException if that configuration is invalid (the message names the key),
+     *     or a file named by a system property or environment variable does not exist
      */
     public Builder loadConfiguration() {
+      LoggingConfig.apply();
       settings = Settings.load();
       return this;
     }

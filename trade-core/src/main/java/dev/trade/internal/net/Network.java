@@ -149,7 +149,12 @@ public final class Network implements AutoCloseable {
       discovery.listen();
     }
     for (PeerAddress a : settings.connectContainers()) {
-      connector.keepConnected(new InetSocketAddress(a.host(), a.port()));
+      InetSocketAddress address = new InetSocketAddress(a.host(), a.port());
+      if (settings.keepTrying()) {
+        connector.keepConnected(address);
+      } else {
+        connector.dialOnce(address);
+      }
     }
     new Heartbeat(live, settings.heartbeatInterval(), settings.failureTimeout(), timer,
         workers).start();
