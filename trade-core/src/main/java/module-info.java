@@ -5,5 +5,9 @@
  * implementation (registry, call chain, codec, networking, discovery) and may change at any time.
  */
 module dev.trade {
+  // TRADE's tradeLogging.config files configure java.util.logging, the JDK's default backend of
+  // System.Logger, through which TRADE logs.
+  requires java.logging;
+
   exports dev.trade;
 }

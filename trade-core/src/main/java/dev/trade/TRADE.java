@@ -1,6 +1,5 @@
 package dev.trade;
 
-import java.lang.annotation.Annotation;
 import java.util.Collection;
 import java.util.Objects;
 
@@ -24,6 +23,12 @@ import java.util.Objects;
  * }</pre>
  */
 public final class TRADE {
+  /**
+   * The date (ISO 8601) of the last change to the API this class offers, as TRADE publishes the
+   * date of its build: code can log which API it runs against.
+   */
+  public static final String lastmodified = "2026-12-04";
+
   private static final Object LOCK = new Object();
   private static volatile TRADEContainer defaultContainer;
   // Guarded by LOCK: what setDefaultContainer(Builder) asked for, until the first use builds it.
@@ -288,7 +293,7 @@ public final class TRADE {
    * @return the matches, in preference order; maybe none
    */
   public static Collection<TRADEServiceInfo> getAvailableServices(
-      Class<? extends Annotation> annotation, TRADEServiceConstraints constraints) {
+      Class<?> annotation, TRADEServiceConstraints constraints) {
     return getDefaultContainer().getAvailableServices(annotation, constraints);
   }
 

@@ -1,6 +1,7 @@
 package dev.trade;
 
 import dev.trade.internal.codec.InfoBinding;
+import dev.trade.internal.config.LoggingConfig;
 import dev.trade.internal.config.Settings;
 import dev.trade.internal.container.ContainerCore;
 import dev.trade.internal.notify.Notifications;
@@ -236,15 +237,22 @@ public final class TRADEContainer implements AutoCloseable {
   }
 
   /**
-   * Every service matching {@code constraints} whose method carries {@code annotation}.
+   * Every service matching {@code constraints} (null: all) whose method, or a declaration it
+   * overrides, carries {@code annotation}, in preference order; maybe none. Services of other
+   * containers are included when this JVM knows the annotation's class (which it does, since the
+   * caller names it): their annotations travel with their descriptions.
    *
-   * @param annotation the annotation type; not null
-   * @param constraints the constraints; null matches every service
-   * @return the matches, in preference order; maybe none
+   * @param annotation an annotation type, such as DIARC's {@code Action.class}
+   * @throws IllegalArgumentException if {@code annotation} is not an annotation type
    */
   public Collection<TRADEServiceInfo> getAvailableServices(
-      Class<? extends Annotation> annotation, TRADEServiceConstraints constraints) {
+      Class<?> annotation, TRADEServiceConstraints constraints) {
     Objects.requireNonNull(annotation, "annotation == null");
+    if (!annotation.isAnnotation()) {
+      throw new IllegalArgumentException("getAvailableServices(annotation, constraints): "
+          + annotation.getName() + " is not an annotation type; pass the class of an annotation,"
+          + " such as TRADEService.class");
+    }
     checkOpen();
     TRADEServiceConstraints c = constraints == null ? new TRADEServiceConstraints() : constraints;
     return bindAll(core.registry().find(c.requiredName(), c.toQuery()), annotation);
@@ -462,7 +470,7 @@ public final class TRADEContainer implements AutoCloseable {
     return new TRADEServiceInfo(d, core);
   }
 
-  private List<TRADEServiceInfo> bindAll(List<Entry> entries, Class<? extends Annotation> annotation) {
+  private List<TRADEServiceInfo> bindAll(List<Entry> entries, Class<?> annotation) {
     List<TRADEServiceInfo> infos = new ArrayList<>(entries.size());
     for (Entry e : entries) {
       if (annotation == null || hasAnnotation(e.descriptor(), annotation)) {
@@ -472,7 +480,7 @@ public final class TRADEContainer implements AutoCloseable {
     return infos;
   }
 
-  private static boolean hasAnnotation(ServiceDescriptor d, Class<? extends Annotation> type) {
+  private static boolean hasAnnotation(ServiceDescriptor d, Class<?> type) {
     for (Annotation a : d.annotations()) {
       if (a.annotationType() == type) {
         return true;
@@ -519,13 +527,19 @@ public final class TRADEContainer implements AutoCloseable {
     /**
      * Starts over from the configuration TRADE would load for the default container: the file named
      * by the system property {@code trade.properties.path}, else by the environment variable
-     * {@code TRADE_PROPERTIES_PATH}, else {@code trade.properties} on the class path, else the
-     * defaults.
+     * {@code TRADE_PROPERTIES_PATH}, else {@code trade.properties} in the working directory, else
+     * {@code trade.properties} on the class path, else the defaults. Also applies TRADE's logging
+     * file, as TRADE does: the one named by the system property {@code tradeLogging.config.path},
+     * else by the environment variable {@code TRADE_LOGGING_CONFIG_PATH}, else
+     * {@code tradeLogging.config} in the working directory (merged into the JVM's
+     * {@code java.util.logging} configuration, once per file). See docs/configuration.md.
      *
      * @return this builder
-     * @throws IllegalArgumentException if that configuration is invalid (the message names the key)
+     * @throws IllegalArgumentException if that configuration is invalid (the message names the key),
+     *     or a file named by a system property or environment variable does not exist
      */
     public Builder loadConfiguration() {
+      LoggingConfig.apply();
       settings = Settings.load();
       return this;
     }

@@ -2,6 +2,7 @@ package dev.trade;
 
 import dev.trade.internal.registry.Query;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Objects;
@@ -25,7 +26,12 @@ import java.util.Set;
  *   <li>{@link #inGroups(String...)}: registered in all of the given groups;
  *       {@link #notInGroups(String...)}: in none of them;
  *   <li>{@link #local()}: provided by the container that performs the lookup;
- *       {@link #host(String)}: provided by a container on that host.
+ *       {@link #host(String)} (or TRADE's name {@link #onHost(String)}): provided by a container on
+ *       that host; {@link #notOnHost(String...)}: by a container on none of those hosts;
+ *       {@link #onLocalhost()}: by a container on the same host as the one that performs the
+ *       lookup, {@link #notOnLocalhost()}: on another host. Hosts are compared by the name each
+ *       container announces for itself ({@link TRADEServiceInfo#getHost()}), without any name
+ *       lookup.
  * </ul>
  *
  * <p><b>Or and not.</b> Constraints form a disjunctive normal form with negation: an object matches
@@ -44,9 +50,15 @@ import java.util.Set;
  * Alternatives and negations are copied when added (so later changes to the argument do not
  * affect this object).
  *
+ * <p>Two constraints objects are {@link #equals equal} when every constraint, alternative and
+ * negation is equal; since the object is mutable, so are its equality and hash code: do not change
+ * one while it is a key in a hash map.
+ *
  * <p>Not thread-safe: build it in one thread, then share it freely for lookups (lookups only read).
+ * The class is not final, as in TRADE; a subclass that adds state should override {@link #equals}
+ * and {@link #hashCode}.
  */
-public final class TRADEServiceConstraints {
+public class TRADEServiceConstraints {
   private String name;
   private Class<?>[] argTypes;
   private Class<?> returnType;
@@ -54,6 +66,9 @@ public final class TRADEServiceConstraints {
   private final Set<String> notInGroups = new LinkedHashSet<>();
   private boolean local;
   private String host;
+  /** TRUE: on the looking-up container's host; FALSE: on another; null: anywhere. */
+  private Boolean localhost;
+  private final Set<String> notOnHosts = new LinkedHashSet<>();
   private final List<TRADEServiceConstraints> alternatives = new ArrayList<>();
   private final List<TRADEServiceConstraints> negations = new ArrayList<>();
 
@@ -146,6 +161,38 @@ public final class TRADEServiceConstraints {
     return this;
   }
 
+  /** TRADE's name for {@link #host(String)}. */
+  public TRADEServiceConstraints onHost(String host) {
+    return host(host);
+  }
+
+  /**
+   * Only services of containers on none of these hosts (adds to earlier calls; null and blank names
+   * are ignored).
+   */
+  public TRADEServiceConstraints notOnHost(String... hosts) {
+    addGroups(notOnHosts, hosts);
+    return this;
+  }
+
+  /**
+   * Only services of containers on the same host as the container that performs the lookup (its
+   * own services included). Replaces an earlier {@link #notOnLocalhost()}.
+   */
+  public TRADEServiceConstraints onLocalhost() {
+    this.localhost = Boolean.TRUE;
+    return this;
+  }
+
+  /**
+   * Only services of containers on another host than the container that performs the lookup.
+   * Replaces an earlier {@link #onLocalhost()}.
+   */
+  public TRADEServiceConstraints notOnLocalhost() {
+    this.localhost = Boolean.FALSE;
+    return this;
+  }
+
   /**
    * Also match services that match {@code alternative} (a copy of it is taken now).
    *
@@ -195,6 +242,8 @@ public final class TRADEServiceConstraints {
         Set.copyOf(notInGroups),
         local,
         host,
+        localhost,
+        Set.copyOf(notOnHosts),
         alt,
         neg);
   }
@@ -225,9 +274,44 @@ public final class TRADEServiceConstraints {
     c.notInGroups.addAll(notInGroups);
     c.local = local;
     c.host = host;
+    c.localhost = localhost;
+    c.notOnHosts.addAll(notOnHosts);
     c.alternatives.addAll(alternatives);
     c.negations.addAll(negations);
     return c;
+  }
+
+  /**
+   * True when {@code o} is a constraints object of the same class with equal constraints,
+   * alternatives and negations (groups and hosts compared as sets, alternatives and negations in
+   * the order added).
+   */
+  @Override
+  public boolean equals(Object o) {
+    if (this == o) {
+      return true;
+    }
+    if (o == null || o.getClass() != getClass()) {
+      return false;
+    }
+    TRADEServiceConstraints c = (TRADEServiceConstraints) o;
+    return local == c.local
+        && Objects.equals(name, c.name)
+        && Arrays.equals(argTypes, c.argTypes)
+        && Objects.equals(returnType, c.returnType)
+        && inGroups.equals(c.inGroups)
+        && notInGroups.equals(c.notInGroups)
+        && Objects.equals(host, c.host)
+        && Objects.equals(localhost, c.localhost)
+        && notOnHosts.equals(c.notOnHosts)
+        && alternatives.equals(c.alternatives)
+        && negations.equals(c.negations);
+  }
+
+  @Override
+  public int hashCode() {
+    return Objects.hash(name, Arrays.hashCode(argTypes), returnType, inGroups, notInGroups, local,
+        host, localhost, notOnHosts, alternatives, negations);
   }
 
   private static void addGroups(Set<String> target, String[] groups) {
@@ -275,6 +359,14 @@ public final class TRADEServiceConstraints {
     }
     if (host != null) {
       sb.append(sep).append("host=").append(host);
+      sep = ", ";
+    }
+    if (!notOnHosts.isEmpty()) {
+      sb.append(sep).append("notOnHost=").append(notOnHosts);
+      sep = ", ";
+    }
+    if (localhost != null) {
+      sb.append(sep).append(localhost ? "onLocalhost" : "notOnLocalhost");
       sep = ", ";
     }
     for (TRADEServiceConstraints n : negations) {

@@ -9,6 +9,7 @@ import java.lang.annotation.Annotation;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Collection;
+import java.util.Collections;
 import java.util.List;
 import java.util.Objects;
 import java.util.LinkedHashSet;
@@ -23,22 +24,35 @@ import java.util.LinkedHashSet;
  * Java object. It stays callable while the service is registered; afterwards every call fails with
  * {@link TRADEServiceUnavailableException}.
  *
- * <p>The public fields keep TRADE's names; the arrays are copies that callers may not change.
- * Immutable and safe for concurrent use.
+ * <p>The public fields keep TRADE's names and report types as TRADE 1.1.1 does: for
+ * {@code boolean openGripper(int speed, double[] xs, long l)}, {@link #serviceString} is
+ * {@code openGripper(int,[D,long)}, {@link #serviceParameterTypeNames} is
+ * {@code [java.lang.Integer, [D, java.lang.Long]} (primitives boxed, so that a caller can convert
+ * arguments by these names), and {@link #serviceReturnTypeName} is {@code boolean} (as declared).
+ * Each info has arrays of its own; a caller that changes them changes only its own copy.
+ * Immutable apart from that, and safe for concurrent use.
  */
-public final class TRADEServiceInfo implements Serializable {
+public final class TRADEServiceInfo implements Serializable, Cloneable {
   private static final long serialVersionUID = 1L;
 
   /** The method name, e.g. {@code openGripper}. */
   public final String serviceName;
-  /** {@code name(T1,T2)} with each parameter's {@link Class#getTypeName()}: {@code openGripper(int)}. */
+  /**
+   * {@code name(T1,T2)} with each declared parameter type's {@link Class#getName()}:
+   * {@code openGripper(int)}, {@code openGripper(int,[D,long)}.
+   */
   public final String serviceString;
   /** The parameter names (real names when the provider was compiled with {@code -parameters}). */
   public final String[] serviceParameterNames;
-  /** {@link Class#getTypeName()} of each parameter type. */
+  /**
+   * {@link Class#getName()} of each parameter type, a primitive type replaced by its box:
+   * {@code java.lang.Integer} for {@code int}, {@code [D} for {@code double[]}.
+   */
   public final String[] serviceParameterTypeNames;
-  /** {@link Class#getTypeName()} of the return type. */
+  /** {@link Class#getName()} of the declared return type: {@code boolean}, {@code void}, {@code [D}. */
   public final String serviceReturnTypeName;
+  /** {@link Class#getName()} of each exception type the service method declares, in order. */
+  public final String[] exceptionTypeNames;
 
   private final transient ServiceDescriptor descriptor;
   private final transient ServiceCaller caller;
@@ -53,10 +67,18 @@ public final class TRADEServiceInfo implements Serializable {
     this.caller = Objects.requireNonNull(caller, "caller == null");
     this.timeoutNanos = timeoutNanos;
     this.serviceName = descriptor.name();
-    this.serviceString = descriptor.signature();
+    List<String> types = descriptor.parameterTypeNames();
+    String[] binary = new String[types.size()];
+    String[] boxed = new String[types.size()];
+    for (int i = 0; i < binary.length; i++) {
+      binary[i] = Types.binaryName(types.get(i));
+      boxed[i] = Types.boxedBinaryName(types.get(i));
+    }
+    this.serviceString = descriptor.name() + "(" + String.join(",", binary) + ")";
     this.serviceParameterNames = descriptor.parameterNames().toArray(new String[0]);
-    this.serviceParameterTypeNames = descriptor.parameterTypeNames().toArray(new String[0]);
-    this.serviceReturnTypeName = descriptor.returnTypeName();
+    this.serviceParameterTypeNames = boxed;
+    this.serviceReturnTypeName = Types.binaryName(descriptor.returnTypeName());
+    this.exceptionTypeNames = descriptor.exceptionTypeNames().toArray(new String[0]);
   }
 
   /**
@@ -110,7 +132,8 @@ public final class TRADEServiceInfo implements Serializable {
   }
 
   /**
-   * The declared parameter types.
+   * The declared parameter types, a primitive type replaced by its box ({@code Integer.class} for
+   * {@code int}), as TRADE reports them; a new array on each call.
    *
    * @return a new array of the parameter types, in order
    * @throws TypeNotPresentException if a parameter type is not known in this JVM
@@ -118,7 +141,7 @@ public final class TRADEServiceInfo implements Serializable {
   public Class<?>[] getServiceParameterTypes() {
     Class<?>[] types = new Class<?>[serviceParameterTypeNames.length];
     for (int i = 0; i < types.length; i++) {
-      types[i] = resolve(descriptor.parameterTypeNames().get(i));
+      types[i] = Types.box(resolve(descriptor.parameterTypeNames().get(i)));
     }
     return types;
   }
@@ -143,12 +166,20 @@ public final class TRADEServiceInfo implements Serializable {
   }
 
   /**
-   * The annotations on the service method and the declarations it overrides.
-   *
-   * @return a new array with one annotation per type
+   * The annotations on the service method and the declarations it overrides, one per type, as an
+   * unmodifiable list. For a service of another container: those whose annotation type this JVM
+   * knows and does not refuse (see docs/protocol.md, "What the receiver enforces").
    */
-  public Annotation[] getAnnotations() {
-    return descriptor.annotations().toArray(new Annotation[0]);
+  public List<Annotation> getAnnotations() {
+    return descriptor.annotations();
+  }
+
+  /**
+   * The annotations of each parameter, one unmodifiable list per parameter (empty for a parameter
+   * without any), gathered like {@link #getAnnotations()}.
+   */
+  public List<List<Annotation>> getParameterAnnotations() {
+    return descriptor.parameterAnnotations();
   }
 
   /**
@@ -202,6 +233,15 @@ public final class TRADEServiceInfo implements Serializable {
     return descriptor;
   }
 
+  /**
+   * A copy of this info: equal to it, bound to the same container, with the same deadline, and with
+   * arrays of its own.
+   */
+  @Override
+  public TRADEServiceInfo clone() {
+    return new TRADEServiceInfo(descriptor, caller, timeoutNanos);
+  }
+
   private static Class<?> resolve(String typeName) {
     ClassLoader context = Thread.currentThread().getContextClassLoader();
     Class<?> c = context == null ? null : Types.resolve(typeName, context);
@@ -253,6 +293,8 @@ public final class TRADEServiceInfo implements Serializable {
     private final ArrayList<String> parameterTypeNames;
     private final String returnTypeName;
     private final ArrayList<String> groups;
+    private final String genericReturnTypeName;
+    private final ArrayList<String> exceptionTypeNames;
 
     SerialForm(TRADEServiceInfo info) {
       ServiceDescriptor d = info.descriptor;
@@ -265,11 +307,16 @@ public final class TRADEServiceInfo implements Serializable {
       parameterTypeNames = new ArrayList<>(d.parameterTypeNames());
       returnTypeName = d.returnTypeName();
       groups = new ArrayList<>(d.groups());
+      genericReturnTypeName = d.genericReturnTypeName();
+      exceptionTypeNames = new ArrayList<>(d.exceptionTypeNames());
     }
 
     private Object readResolve() throws ObjectStreamException {
       ServiceDescriptor d = new ServiceDescriptor(containerId, containerName, host, serviceId, name,
-          parameterNames, parameterTypeNames, returnTypeName, new LinkedHashSet<>(groups), List.of());
+          parameterNames, parameterTypeNames, returnTypeName, new LinkedHashSet<>(groups), List.of(),
+          genericReturnTypeName == null ? returnTypeName : genericReturnTypeName,
+          exceptionTypeNames == null ? List.of() : exceptionTypeNames,
+          Collections.nCopies(parameterNames.size(), List.of()));
       return TRADE.defaultContainer().bind(d);
     }
   }

@@ -3,9 +3,11 @@ package dev.trade.internal.codec;
 import dev.trade.internal.registry.Types;
 import java.io.ObjectInputFilter;
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Objects;
 import java.util.Set;
+import java.util.TreeSet;
 import java.util.concurrent.ConcurrentHashMap;
 
 /**
@@ -57,9 +59,40 @@ public final class AllowList {
   private volatile List<Pattern> patterns;
   /** Types whose package {@link #addPackageOf} added: a caller names its return type on every call. */
   private final Set<Class<?>> packagesAdded = ConcurrentHashMap.newKeySet();
+  /** For a view made by {@link #with}: the list it extends, else null. */
+  private final AllowList base;
+  /** For a view made by {@link #with}: the class names it adds. */
+  private final Set<String> declared;
 
   private AllowList(List<Pattern> patterns) {
     this.patterns = List.copyOf(patterns);
+    this.base = null;
+    this.declared = Set.of();
+  }
+
+  private AllowList(AllowList base, Set<String> declared) {
+    this.patterns = List.of();
+    this.base = base;
+    this.declared = declared;
+  }
+
+  /**
+   * A view that also allows the classes named exactly in {@code declared} (binary names; arrays
+   * are judged by their element type as always), unless a refusal of this list matches them. The
+   * view follows later changes to this list and cannot be added to itself. Used for the classes a
+   * service's signature declares, in that service's calls and replies.
+   */
+  public AllowList with(Set<String> declared) {
+    Objects.requireNonNull(declared, "declared == null");
+    if (declared.isEmpty()) {
+      return this;
+    }
+    if (base != null) {
+      Set<String> both = new HashSet<>(this.declared);
+      both.addAll(declared);
+      return new AllowList(base, Set.copyOf(both));
+    }
+    return new AllowList(this, declared);
   }
 
   /** A list holding {@link #DEFAULT_PATTERNS}. */
@@ -88,6 +121,9 @@ public final class AllowList {
    */
   public void add(String patterns) {
     Objects.requireNonNull(patterns, "patterns == null");
+    if (base != null) {
+      throw new IllegalStateException("add patterns to the list this view was made from");
+    }
     List<Pattern> parsed = new ArrayList<>();
     for (String text : patterns.split(";", -1)) {
       if (!text.isBlank()) {
@@ -131,16 +167,34 @@ public final class AllowList {
     if (name == null) {
       return true; // a primitive type or an array of one
     }
+    if (base != null) {
+      int decision = base.decide(name);
+      return decision > 0 || decision == 0 && declared.contains(name);
+    }
+    return decide(name) > 0;
+  }
+
+  /**
+   * Whether a refusal ({@code !pattern}) matches the class with this binary name: such a class is
+   * refused whatever else would allow it.
+   */
+  public boolean refuses(String className) {
+    String name = elementName(className);
+    return name != null && (base != null ? base : this).decide(name) < 0;
+  }
+
+  /** 1: a pattern allows {@code elementName}; -1: a refusal matches it; 0: no pattern matches. */
+  private int decide(String elementName) {
     boolean allowed = false;
     for (Pattern p : patterns) {
-      if (p.matches(name)) {
+      if (p.matches(elementName)) {
         if (p.negative) {
-          return false;
+          return -1;
         }
         allowed = true;
       }
     }
-    return allowed;
+    return allowed ? 1 : 0;
   }
 
   /**
@@ -160,10 +214,10 @@ public final class AllowList {
     };
   }
 
-  /** The current patterns, in the order added. */
+  /** The current patterns, in the order added (of the list a view was made from). */
   public List<String> patterns() {
     List<String> texts = new ArrayList<>();
-    for (Pattern p : patterns) {
+    for (Pattern p : base != null ? base.patterns : patterns) {
       texts.add(p.text);
     }
     return texts;
@@ -174,6 +228,11 @@ public final class AllowList {
    * use with {@link ObjectInputFilter.Config#createFilter}.
    */
   public String toFilterString() {
+    if (base != null) {
+      String own = base.toFilterString(); // refusals first, so the names added after stay refused
+      return own.substring(0, own.length() - 2) + String.join(";", new TreeSet<>(declared))
+          + ";!*";
+    }
     StringBuilder sb = new StringBuilder();
     for (Pattern p : patterns) {
       if (p.negative) {

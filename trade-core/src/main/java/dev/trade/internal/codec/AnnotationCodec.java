@@ -13,6 +13,7 @@ import java.util.Comparator;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 
 /**
  * Encodes annotation instances as their type name and member values, and re-creates them on decoding
@@ -60,20 +61,29 @@ final class AnnotationCodec {
 
   static Annotation read(Decoder d) throws TRADESerializationException {
     String typeName = d.readName();
-    Class<?> type = d.resolve(typeName);
+    Class<?> type = d.resolveAnnotationType(typeName);
     if (!type.isAnnotation()) {
       throw new TRADESerializationException(
           "Cannot decode annotation @" + typeName + ": it is not an annotation type here");
     }
     int n = d.readCount(2);
+    Members m = members(type);
     d.enter();
     Map<String, Object> given = new HashMap<>();
-    for (int i = 0; i < n; i++) {
-      String name = d.readName();
-      given.put(name, d.readValue());
+    AllowList outer = d.allowList;
+    try {
+      for (int i = 0; i < n; i++) {
+        String name = d.readName();
+        // The enum and annotation types a member declares may arrive in it, as the annotation
+        // type itself may (see Decoder.resolveAnnotationType).
+        int at = m.problem == null ? m.indexOf(name) : -1;
+        d.allowList = at < 0 ? outer : outer.with(m.declared[at]);
+        given.put(name, d.readValue());
+      }
+    } finally {
+      d.allowList = outer;
     }
     d.leave();
-    Members m = members(type);
     if (m.problem != null) {
       throw new TRADESerializationException(
           "Cannot decode annotation @" + typeName + ": " + m.problem);
@@ -102,6 +112,8 @@ final class AnnotationCodec {
     final String[] names;
     final Class<?>[] types;
     final Object[] defaults;
+    /** Per member: the enum or annotation type its values are of, as a set of one name, or empty. */
+    final Set<String>[] declared;
     /** {@code (Object)Object} getters for the members of any instance of the type. */
     private final MethodHandle[] getters;
     /** Why members cannot be read (the type is not accessible), or null. */
@@ -131,11 +143,16 @@ final class AnnotationCodec {
       names = new String[n];
       types = new Class<?>[n];
       defaults = new Object[n];
+      @SuppressWarnings("unchecked")
+      Set<String>[] declaredTypes = new Set[n];
+      declared = declaredTypes;
       getters = new MethodHandle[n];
       for (int i = 0; i < n && trouble == null; i++) {
         Method method = methods[i];
         names[i] = method.getName();
         types[i] = method.getReturnType();
+        Class<?> element = types[i].isArray() ? types[i].getComponentType() : types[i];
+        declared[i] = element.isEnum() || element.isAnnotation() ? Set.of(element.getName()) : Set.of();
         try {
           defaults[i] = method.getDefaultValue();
           method.setAccessible(true);

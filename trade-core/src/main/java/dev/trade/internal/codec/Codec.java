@@ -2,6 +2,7 @@ package dev.trade.internal.codec;
 
 import dev.trade.TRADESerializationException;
 import java.util.Objects;
+import java.util.Set;
 
 /**
  * Turns Java values into wire format version 1 and back: tagged, big-endian, language-neutral, as
@@ -103,6 +104,16 @@ public final class Codec {
    *     not accept the decoded values
    */
   public Object read(ByteSource in, ClassLoader loader) throws TRADESerializationException {
+    return read(in, loader, Set.of());
+  }
+
+  /**
+   * As {@link #read(ByteSource, ClassLoader)}, also allowing the classes named in
+   * {@code declared} (binary names; see {@link AllowList#with}): those a service's signature
+   * declares, for its calls and replies.
+   */
+  public Object read(ByteSource in, ClassLoader loader, Set<String> declared)
+      throws TRADESerializationException {
     Objects.requireNonNull(in, "in == null");
     Objects.requireNonNull(loader, "loader == null");
     int savedLimit = in.limit;
@@ -111,7 +122,8 @@ public final class Codec {
       in.limit = (int) valueLimit;
     }
     try {
-      return new Decoder(in, limits, allowList, info, loader, types, javaSerialization).readValue();
+      return new Decoder(in, limits, allowList.with(declared), info, loader, types,
+          javaSerialization).readValue();
     } catch (RuntimeException e) { // a safety net; the decoder checks everything it knows of
       throw new MalformedValueException("internal decoding error: " + e, e);
     } finally {
@@ -157,12 +169,18 @@ public final class Codec {
    *     {@code loader} (for example a class the allow-list refuses)
    */
   public Object copy(Object value, ClassLoader loader) throws TRADESerializationException {
+    return copy(value, loader, Set.of());
+  }
+
+  /** As {@link #copy(Object, ClassLoader)}, decoding as {@link #read(ByteSource, ClassLoader, Set)}. */
+  public Object copy(Object value, ClassLoader loader, Set<String> declared)
+      throws TRADESerializationException {
     if (isImmutable(value, 0)) {
       return value;
     }
     ByteSink sink = new ByteSink(64);
     write(value, sink);
-    return read(ByteSource.of(sink.array(), 0, sink.size()), loader);
+    return read(ByteSource.of(sink.array(), 0, sink.size()), loader, declared);
   }
 
   private boolean isImmutable(Object value, int depth) {

@@ -31,7 +31,8 @@ import java.util.UUID;
 final class Decoder {
   final ByteSource in;
   final Limits limits;
-  final AllowList allowList;
+  /** Replaced for the members of an annotation (see {@link AnnotationCodec}), then restored. */
+  AllowList allowList;
   final InfoBinding info;
   final ClassLoader loader;
   private final TypeCache types;
@@ -223,6 +224,33 @@ final class Decoder {
       throw new TRADESerializationException("Cannot decode a " + name
           + ": the class is not known here (" + e.getMessage() + ")");
     }
+  }
+
+  /**
+   * Loads the type of an ANNOTATION value: as {@link #resolve} when the allow-list allows it;
+   * otherwise, unless a refusal names it, it is loaded without initialisation and accepted if it is
+   * an annotation type. Decoding an annotation runs none of its code (the instance is TRADE's
+   * proxy, answering with the decoded members), so an annotation type this JVM knows is safe to
+   * decode; this is what lets annotations of services travel without configuration.
+   */
+  Class<?> resolveAnnotationType(String name) throws TRADESerializationException {
+    if (!TypeNames.isValid(name) || Types.primitive(name) != null) {
+      throw new MalformedValueException("invalid annotation type name '" + name + "'");
+    }
+    if (allowList.isAllowed(name) || allowList.refuses(name)) {
+      return resolve(name);
+    }
+    Class<?> type;
+    try {
+      type = Class.forName(name, false, loader);
+    } catch (ClassNotFoundException | LinkageError e) {
+      throw new TRADESerializationException("Cannot decode annotation @" + name
+          + ": the class is not known here (" + e.getMessage() + ")");
+    }
+    if (!type.isAnnotation()) {
+      throw refused(name);
+    }
+    return type;
   }
 
   static TRADESerializationException refused(String name) {

@@ -12,7 +12,7 @@ import java.util.Set;
  * Encodes a {@code TRADEServiceInfo} as its {@link ServiceDescriptor} and binds decoded descriptors
  * through the codec's {@link InfoBinding}.
  *
- * <p>Each annotation travels in an entry prefixed with its byte length, so that a receiver that does
+ * <p>Each annotation (of the method, and of each parameter) travels in an entry prefixed with its byte length, so that a receiver that does
  * not know or allow an annotation's class (or a class in its members) skips just that annotation,
  * as the descriptor's contract says ("those whose class is known here"). Likewise the sender leaves
  * out annotations whose members it cannot encode.
@@ -21,19 +21,6 @@ final class DescriptorCodec {
   private DescriptorCodec() {}
 
   static void write(Encoder e, ServiceDescriptor d) throws TRADESerializationException {
-    ByteSink entries = new ByteSink(d.annotations().isEmpty() ? 0 : 64);
-    int count = 0;
-    for (Annotation a : d.annotations()) {
-      int at = entries.size();
-      entries.writeInt(0);
-      try {
-        AnnotationCodec.write(new Encoder(entries, e.limits, e.info), a);
-        entries.putInt(at, entries.size() - at - 4);
-        count++;
-      } catch (TRADESerializationException ex) {
-        entries.truncate(at); // leave this annotation out
-      }
-    }
     ByteSink out = e.out;
     out.writeByte(Tags.SERVICE_INFO);
     out.writeText(d.containerId());
@@ -53,9 +40,36 @@ final class DescriptorCodec {
     for (String s : d.groups()) {
       out.writeText(s);
     }
-    out.writeVarUInt(count);
-    out.writeBytes(entries.array(), 0, entries.size());
+    writeAnnotations(e, d.annotations());
+    out.writeText(d.genericReturnTypeName());
+    out.writeVarUInt(d.exceptionTypeNames().size());
+    for (String s : d.exceptionTypeNames()) {
+      out.writeText(s);
+    }
+    for (List<Annotation> list : d.parameterAnnotations()) {
+      writeAnnotations(e, list);
+    }
     e.checkRoom(0);
+  }
+
+  /** A count and that many length-prefixed annotation entries, leaving out unencodable ones. */
+  private static void writeAnnotations(Encoder e, List<Annotation> annotations)
+      throws TRADESerializationException {
+    ByteSink entries = new ByteSink(annotations.isEmpty() ? 0 : 64);
+    int count = 0;
+    for (Annotation a : annotations) {
+      int at = entries.size();
+      entries.writeInt(0);
+      try {
+        AnnotationCodec.write(new Encoder(entries, e.limits, e.info), a);
+        entries.putInt(at, entries.size() - at - 4);
+        count++;
+      } catch (TRADESerializationException ex) {
+        entries.truncate(at); // leave this annotation out
+      }
+    }
+    e.out.writeVarUInt(count);
+    e.out.writeBytes(entries.array(), 0, entries.size());
   }
 
   static Object read(Decoder d) throws TRADESerializationException {
@@ -70,19 +84,19 @@ final class DescriptorCodec {
     List<String> parameterTypeNames = readTexts(d, n);
     String returnTypeName = d.readText();
     Set<String> groups = new LinkedHashSet<>(readTexts(d, d.readCount(1)));
-    int a = d.readCount(5);
-    List<Annotation> annotations = new ArrayList<>();
-    for (int i = 0; i < a; i++) {
-      Annotation annotation = readAnnotationEntry(d);
-      if (annotation != null) {
-        annotations.add(annotation);
-      }
+    List<Annotation> annotations = readAnnotations(d);
+    String genericReturnTypeName = d.readText();
+    List<String> exceptionTypeNames = readTexts(d, d.readCount(1));
+    List<List<Annotation>> parameterAnnotations = new ArrayList<>(n);
+    for (int i = 0; i < n; i++) {
+      parameterAnnotations.add(readAnnotations(d));
     }
     d.leave();
     ServiceDescriptor descriptor;
     try {
       descriptor = new ServiceDescriptor(containerId, containerName, host, serviceId, name,
-          parameterNames, parameterTypeNames, returnTypeName, groups, annotations);
+          parameterNames, parameterTypeNames, returnTypeName, groups, annotations,
+          genericReturnTypeName, exceptionTypeNames, parameterAnnotations);
     } catch (RuntimeException e) {
       throw new MalformedValueException("invalid service descriptor: " + e.getMessage(), e);
     }
@@ -100,6 +114,19 @@ final class DescriptorCodec {
       texts.add(d.readText());
     }
     return texts;
+  }
+
+  /** A count and that many annotation entries; those whose class is unknown or refused are skipped. */
+  private static List<Annotation> readAnnotations(Decoder d) throws TRADESerializationException {
+    int a = d.readCount(5);
+    List<Annotation> annotations = new ArrayList<>();
+    for (int i = 0; i < a; i++) {
+      Annotation annotation = readAnnotationEntry(d);
+      if (annotation != null) {
+        annotations.add(annotation);
+      }
+    }
+    return annotations;
   }
 
   /** One length-prefixed annotation, or null if its class is unknown or refused here. */

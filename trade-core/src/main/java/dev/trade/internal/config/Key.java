@@ -32,6 +32,8 @@ enum Key {
   CREDENTIALS("diarcUser", ValueType.TEXT),
   TRADESYSID("diarc", ValueType.SYSTEM_ID),
   COPYDATAFORLOCALINVOKES("false", ValueType.BOOL),
+  KEEPTRYING("true", ValueType.BOOL),
+  NETWORKINTERFACE("", ValueType.INTERFACES),
   CALLTIMEOUT("30000", ValueType.MILLIS),
   HEARTBEATINTERVAL("1000", ValueType.MILLIS),
   FAILURETIMEOUT("3000", ValueType.MILLIS),

@@ -4,6 +4,7 @@ import static java.util.Objects.requireNonNull;
 
 import java.lang.System.Logger.Level;
 import java.net.InetAddress;
+import java.nio.file.Path;
 import java.time.Duration;
 import java.util.Collections;
 import java.util.EnumMap;
@@ -40,7 +41,7 @@ public final class Settings {
   public static final String PATH_PROPERTY = "trade.properties.path";
   /** Environment variable naming a properties file; checked second by {@link #load()}. */
   public static final String PATH_ENV = "TRADE_PROPERTIES_PATH";
-  /** Class-path resource checked third by {@link #load()}. */
+  /** File in the working directory checked third, and class-path resource checked fourth. */
   public static final String RESOURCE = "trade.properties";
 
   private static final Settings DEFAULTS = new Settings(parsedDefaults());
@@ -75,6 +76,7 @@ public final class Settings {
    * <ol>
    *   <li>the file named by the system property {@value #PATH_PROPERTY};
    *   <li>the file named by the environment variable {@value #PATH_ENV};
+   *   <li>the file {@value #RESOURCE} in the working directory, if there is one (as TRADE);
    *   <li>a {@value #RESOURCE} resource on the thread context class loader (or, when there is
    *       none, the loader of this class);
    *   <li>{@link #defaults()}.
@@ -92,15 +94,16 @@ public final class Settings {
     if (loader == null) {
       loader = Settings.class.getClassLoader();
     }
-    return load(System::getProperty, System::getenv, loader);
+    return load(System::getProperty, System::getenv, Path.of(""), loader);
   }
 
   /** {@link #load()} with its sources injected, for tests. */
   static Settings load(
       Function<String, String> systemProperties,
       Function<String, String> environment,
+      Path workingDirectory,
       ClassLoader loader) {
-    return SettingsLoader.load(systemProperties, environment, loader);
+    return SettingsLoader.load(systemProperties, environment, workingDirectory, loader);
   }
 
   /**
@@ -288,10 +291,22 @@ public final class Settings {
     return (DiscoveryRange) values.get(Key.DISCOVERYRANGE);
   }
 
-  /** DISCOVERYINTERFACES: interface names for SUBNET discovery; empty means all. Unmodifiable. */
-  @SuppressWarnings("unchecked") // Key.DISCOVERYINTERFACES always parses to a List<String>
+  /**
+   * DISCOVERYINTERFACES, else TRADE's NETWORKINTERFACE: interface names for SUBNET discovery;
+   * empty means all. Unmodifiable.
+   */
+  @SuppressWarnings("unchecked") // both keys always parse to a List<String>
   public List<String> discoveryInterfaces() {
-    return (List<String>) values.get(Key.DISCOVERYINTERFACES);
+    List<String> ours = (List<String>) values.get(Key.DISCOVERYINTERFACES);
+    return ours.isEmpty() ? (List<String>) values.get(Key.NETWORKINTERFACE) : ours;
+  }
+
+  /**
+   * KEEPTRYING: whether the CONNECTCONTAINERS addresses are dialled again after a failed attempt or
+   * a lost link (true), or dialled once at start only (false).
+   */
+  public boolean keepTrying() {
+    return (Boolean) values.get(Key.KEEPTRYING);
   }
 
   /**

@@ -28,6 +28,7 @@ final class SettingsLoader {
   static Settings load(
       Function<String, String> systemProperties,
       Function<String, String> environment,
+      Path workingDirectory,
       ClassLoader loader) {
     Objects.requireNonNull(systemProperties, "systemProperties == null");
     Objects.requireNonNull(environment, "environment == null");
@@ -44,6 +45,10 @@ final class SettingsLoader {
     }
     if (env != null) {
       return fromFile(env, "environment variable " + Settings.PATH_ENV);
+    }
+    Path here = workingDirectory.resolve(Settings.RESOURCE);
+    if (Files.isRegularFile(here)) {
+      return fromFile(here.toString(), "the working directory's " + Settings.RESOURCE);
     }
     URL resource = loader.getResource(Settings.RESOURCE);
     if (resource != null) {

@@ -20,6 +20,7 @@ import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.codec.Limits;
 import dev.trade.internal.config.Settings;
 import dev.trade.internal.net.Network;
+import dev.trade.internal.registry.DeclaredTypes;
 import dev.trade.internal.registry.Entry;
 import dev.trade.internal.registry.LocalService;
 import dev.trade.internal.registry.Registry;
@@ -282,11 +283,11 @@ public final class ContainerCore implements ServiceCaller {
     }
     Object[] copies = new Object[args.length];
     for (int i = 0; i < args.length; i++) {
-      copies[i] = copier.copy(args[i], providerLoader);
+      copies[i] = copier.copy(args[i], providerLoader, s.declaredTypes());
     }
     Object result = hostChain.call(Invocation.local(d, copies, timeout, self, CallContext.EMPTY));
     return Returns.convert(d, returnType,
-        copier.copy(result, RemoteCaller.callerLoader(returnType)));
+        copier.copy(result, RemoteCaller.callerLoader(returnType), s.declaredTypes()));
   }
 
   /** Deregisters everything and stops; idempotent. */

@@ -6,9 +6,11 @@ import dev.trade.internal.call.CallErrors;
 import dev.trade.internal.call.Returns;
 import dev.trade.internal.codec.AllowList;
 import dev.trade.internal.net.Network;
+import dev.trade.internal.registry.DeclaredTypes;
 import dev.trade.internal.registry.ServiceDescriptor;
 import dev.trade.internal.registry.Types;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Supplier;
 
@@ -22,10 +24,14 @@ final class RemoteCaller {
 
   private record Resolved(ClassLoader loader, Class<?> type) {}
 
+  private record Declared(ClassLoader loader, Set<String> names) {}
+
   private final AllowList allowList;
   private final Supplier<Network> network;
   /** Declared return types of services called from here, by type name; see declaredReturnType. */
   private final Map<String, Resolved> returnTypes = new ConcurrentHashMap<>();
+  /** What remote services' signatures declare, by generic return and exception type names. */
+  private final Map<String, Declared> declaredTypes = new ConcurrentHashMap<>();
 
   /** @param network this container's networking, or null when it has none */
   RemoteCaller(AllowList allowList, Supplier<Network> network) {
@@ -50,7 +56,27 @@ final class RemoteCaller {
       allowList.addPackageOf(declared);
     }
     allowList.addPackageOf(returnType);
-    return Returns.convert(d, returnType, n.call(d, args, context, deadline, loader));
+    return Returns.convert(d, returnType,
+        n.call(d, args, context, deadline, loader, declaredTypes(d, loader)));
+  }
+
+  /**
+   * The classes the service's return and exception types declare, as far as {@code loader} knows
+   * them ({@link DeclaredTypes}): its replies may hold them without the allow-list naming them.
+   */
+  private Set<String> declaredTypes(ServiceDescriptor d, ClassLoader loader) {
+    // Walking the classes on every call would cost more than the call's own preparation.
+    String key = d.genericReturnTypeName() + " throws " + d.exceptionTypeNames();
+    Declared known = declaredTypes.get(key);
+    if (known != null && known.loader == loader) {
+      return known.names;
+    }
+    Set<String> names = DeclaredTypes.of(d.genericReturnTypeName(), d.exceptionTypeNames(), loader);
+    if (declaredTypes.size() >= MAX_RESOLVED) {
+      declaredTypes.clear(); // names come from peers' tables: bounded, not trusted
+    }
+    declaredTypes.put(key, new Declared(loader, names));
+    return names;
   }
 
   /** The service's declared return type as {@code loader} sees it, or null if it cannot. */

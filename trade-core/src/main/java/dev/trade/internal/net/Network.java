@@ -151,7 +151,12 @@ public final class Network implements AutoCloseable {
       discovery.listen();
     }
     for (PeerAddress a : settings.connectContainers()) {
-      connector.keepConnected(new InetSocketAddress(a.host(), a.port()));
+      InetSocketAddress address = new InetSocketAddress(a.host(), a.port());
+      if (settings.keepTrying()) {
+        connector.keepConnected(address);
+      } else {
+        connector.dialOnce(address);
+      }
     }
     new Heartbeat(live, settings.heartbeatInterval(), settings.failureTimeout(), timer,
         workers).start();
@@ -200,10 +205,13 @@ public final class Network implements AutoCloseable {
     connector.connectOnce(address);
   }
 
-  /** Calls a remote service; see {@code ServiceCaller}. */
+  /**
+   * Calls a remote service; see {@code ServiceCaller}. The reply is decoded in {@code loader},
+   * also allowing the classes named in {@code declared} (those the service's signature declares).
+   */
   public Object call(ServiceDescriptor d, Object[] args, CallContext context, long deadlineNanos,
-      ClassLoader loader) throws TRADEException {
-    return calls.call(d, args, context, deadlineNanos, loader);
+      ClassLoader loader, Set<String> declared) throws TRADEException {
+    return calls.call(d, args, context, deadlineNanos, loader, declared);
   }
 
   private Link nextHop(UUID container) {

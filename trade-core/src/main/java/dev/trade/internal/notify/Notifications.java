@@ -118,7 +118,7 @@ public final class Notifications implements Registry.Listener {
   public void changed(List<Entry> added, List<Entry> removed) {
     for (Request r : requests) {
       for (Entry e : r.type == Type.JOINED ? added : removed) {
-        if (r.query.matches(e, registry.containerId())) {
+        if (r.query.matches(e, registry.containerId(), registry.host())) {
           enqueue(r, e.descriptor());
         }
       }

@@ -3,6 +3,7 @@ package dev.trade.internal.registry;
 import java.lang.invoke.MethodHandle;
 import java.lang.reflect.Method;
 import java.util.List;
+import java.util.Set;
 
 /**
  * A service provided by this container: its descriptor, the provider object and a method handle
@@ -15,6 +16,7 @@ public final class LocalService {
   private final Method method;
   private final List<Class<?>> parameterTypes;
   private final MethodHandle invoker;
+  private final Set<String> declaredTypes;
   private volatile boolean active = true;
 
   LocalService(ServiceDescriptor descriptor, Object target, Method method, MethodHandle invoker) {
@@ -23,6 +25,7 @@ public final class LocalService {
     this.method = method;
     this.parameterTypes = List.of(method.getParameterTypes());
     this.invoker = invoker;
+    this.declaredTypes = DeclaredTypes.of(method);
   }
 
   public ServiceDescriptor descriptor() {
@@ -44,6 +47,14 @@ public final class LocalService {
 
   public Class<?> returnType() {
     return method.getReturnType();
+  }
+
+  /**
+   * The binary names of the classes the method's signature declares ({@link DeclaredTypes}):
+   * decodable in its calls and replies whatever the allow-list says.
+   */
+  public Set<String> declaredTypes() {
+    return declaredTypes;
   }
 
   /** Typed {@code (Object target, Object[] args) Object}; void methods return null. */

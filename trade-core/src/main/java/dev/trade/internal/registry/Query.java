@@ -14,6 +14,9 @@ import java.util.Set;
  * @param notInGroups groups the service must not be in
  * @param local only services of the looking-up container
  * @param host only services on this host, or null for any
+ * @param localhost TRUE: only services on the looking-up container's host; FALSE: only on other
+ *     hosts; null: any
+ * @param notOnHosts hosts the service must not be on
  * @param alternatives other queries, any of which also matches
  * @param negations queries that must not match
  */
@@ -25,6 +28,8 @@ public record Query(
     Set<String> notInGroups,
     boolean local,
     String host,
+    Boolean localhost,
+    Set<String> notOnHosts,
     List<Query> alternatives,
     List<Query> negations) {
 
@@ -33,12 +38,15 @@ public record Query(
     negations = List.copyOf(negations);
   }
 
-  /** Whether the entry matches, as seen by the container with id {@code localContainerId}. */
-  public boolean matches(Entry e, String localContainerId) {
-    if (matchesOwn(e, localContainerId)) {
+  /**
+   * Whether the entry matches, as seen by the container with id {@code localContainerId} on host
+   * {@code localHost}.
+   */
+  public boolean matches(Entry e, String localContainerId, String localHost) {
+    if (matchesOwn(e, localContainerId, localHost)) {
       boolean excluded = false;
       for (Query n : negations) {
-        if (n.matches(e, localContainerId)) {
+        if (n.matches(e, localContainerId, localHost)) {
           excluded = true;
           break;
         }
@@ -48,14 +56,14 @@ public record Query(
       }
     }
     for (Query a : alternatives) {
-      if (a.matches(e, localContainerId)) {
+      if (a.matches(e, localContainerId, localHost)) {
         return true;
       }
     }
     return false;
   }
 
-  private boolean matchesOwn(Entry e, String localContainerId) {
+  private boolean matchesOwn(Entry e, String localContainerId, String localHost) {
     ServiceDescriptor d = e.descriptor();
     if (name != null && !name.equals(d.name())) {
       return false;
@@ -64,6 +72,12 @@ public record Query(
       return false;
     }
     if (host != null && !host.equals(d.host())) {
+      return false;
+    }
+    if (localhost != null && localhost != localHost.equals(d.host())) {
+      return false;
+    }
+    if (notOnHosts.contains(d.host())) {
       return false;
     }
     if (!d.groups().containsAll(inGroups)) {

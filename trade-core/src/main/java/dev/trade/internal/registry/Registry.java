@@ -62,6 +62,11 @@ public final class Registry {
     return containerId;
   }
 
+  /** The host name this container announces, as services' hosts are compared against it. */
+  public String host() {
+    return host;
+  }
+
   public void addListener(Listener l) {
     listeners.add(l);
   }
@@ -81,8 +86,9 @@ public final class Registry {
     List<Method> methods = ServiceScanner.serviceMethods(provider.getClass());
     List<LocalService> prepared = new ArrayList<>(methods.size());
     for (Method m : methods) {
-      prepared.add(ServiceScanner.prepare(provider, m, (name, names, types, ret, annotations) ->
-          descriptor(name, names, types, ret, groups, annotations)));
+      prepared.add(ServiceScanner.prepare(provider, m, (name, names, types, ret, annotations,
+          genericRet, exceptions, parameterAnnotations) -> descriptor(name, names, types, ret, groups,
+          annotations, genericRet, exceptions, parameterAnnotations)));
     }
     synchronized (this) {
       if (byProvider.containsKey(provider)) {
@@ -348,7 +354,7 @@ public final class Registry {
     List<Entry> candidates = name == null ? s.ordered() : s.byName().getOrDefault(name, List.of());
     List<Entry> result = new ArrayList<>();
     for (Entry e : candidates) {
-      if (query.matches(e, containerId)) {
+      if (query.matches(e, containerId, host)) {
         result.add(e);
       }
     }
@@ -360,7 +366,7 @@ public final class Registry {
     Snapshot s = snapshot;
     List<Entry> candidates = name == null ? s.ordered() : s.byName().getOrDefault(name, List.of());
     for (Entry e : candidates) {
-      if (query.matches(e, containerId)) {
+      if (query.matches(e, containerId, host)) {
         return e;
       }
     }
@@ -386,9 +392,11 @@ public final class Registry {
   }
 
   private ServiceDescriptor descriptor(String name, List<String> names, List<String> types,
-      String ret, Collection<String> groups, List<Annotation> annotations) {
+      String ret, Collection<String> groups, List<Annotation> annotations, String genericRet,
+      List<String> exceptions, List<List<Annotation>> parameterAnnotations) {
     return new ServiceDescriptor(containerId, containerName, host, nextServiceId.getAndIncrement(),
-        name, names, types, ret, new LinkedHashSet<>(groups), annotations);
+        name, names, types, ret, new LinkedHashSet<>(groups), annotations, genericRet, exceptions,
+        parameterAnnotations);
   }
 
   private void publish(List<Entry> added, List<Entry> removed) {

@@ -1,6 +1,7 @@
 package dev.trade.internal.registry;
 
 import java.lang.annotation.Annotation;
+import java.util.ArrayList;
 import java.util.Collections;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -24,6 +25,12 @@ import java.util.Set;
  * @param returnTypeName {@link Class#getTypeName()} of the return type
  * @param groups the groups the service was registered in, in registration order (may be empty)
  * @param annotations the annotations on the service method (those whose class is known here)
+ * @param genericReturnTypeName {@link java.lang.reflect.Type#getTypeName()} of the generic return
+ *     type ({@code java.util.Set<com.acme.Symbol>}); equal to {@code returnTypeName} when it is not
+ *     generic
+ * @param exceptionTypeNames {@link Class#getName()} of each exception type the method declares
+ * @param parameterAnnotations the annotations of each parameter (those whose class is known here),
+ *     one list per parameter
  */
 public record ServiceDescriptor(
     String containerId,
@@ -35,7 +42,19 @@ public record ServiceDescriptor(
     List<String> parameterTypeNames,
     String returnTypeName,
     Set<String> groups,
-    List<Annotation> annotations) {
+    List<Annotation> annotations,
+    String genericReturnTypeName,
+    List<String> exceptionTypeNames,
+    List<List<Annotation>> parameterAnnotations) {
+
+  /** A descriptor with no generic return type, no declared exceptions and no parameter annotations. */
+  public ServiceDescriptor(String containerId, String containerName, String host, long serviceId,
+      String name, List<String> parameterNames, List<String> parameterTypeNames,
+      String returnTypeName, Set<String> groups, List<Annotation> annotations) {
+    this(containerId, containerName, host, serviceId, name, parameterNames, parameterTypeNames,
+        returnTypeName, groups, annotations, returnTypeName, List.of(),
+        Collections.nCopies(parameterNames.size(), List.of()));
+  }
 
   public ServiceDescriptor {
     Objects.requireNonNull(containerId, "containerId == null");
@@ -47,9 +66,17 @@ public record ServiceDescriptor(
     Objects.requireNonNull(returnTypeName, "returnTypeName == null");
     groups = Collections.unmodifiableSet(new LinkedHashSet<>(groups)); // keeps the given order
     annotations = List.copyOf(annotations);
-    if (parameterNames.size() != parameterTypeNames.size()) {
-      throw new IllegalArgumentException(
-          "parameterNames and parameterTypeNames differ in length for " + name);
+    Objects.requireNonNull(genericReturnTypeName, "genericReturnTypeName == null");
+    exceptionTypeNames = List.copyOf(exceptionTypeNames);
+    List<List<Annotation>> perParameter = new ArrayList<>(parameterAnnotations.size());
+    for (List<Annotation> list : parameterAnnotations) {
+      perParameter.add(List.copyOf(list));
+    }
+    parameterAnnotations = List.copyOf(perParameter);
+    if (parameterNames.size() != parameterTypeNames.size()
+        || parameterNames.size() != parameterAnnotations.size()) {
+      throw new IllegalArgumentException("parameterNames, parameterTypeNames and"
+          + " parameterAnnotations differ in length for " + name);
     }
   }
 

@@ -88,8 +88,13 @@ final class ServiceScanner {
       names.add(named[i].getName());
       typeNames.add(params[i].getType().getTypeName());
     }
-    ServiceDescriptor d = factory.create(
-        m.getName(), names, typeNames, m.getReturnType().getTypeName(), annotations(hierarchy, m));
+    List<String> exceptions = new ArrayList<>();
+    for (Class<?> x : m.getExceptionTypes()) {
+      exceptions.add(x.getName());
+    }
+    ServiceDescriptor d = factory.create(m.getName(), names, typeNames,
+        m.getReturnType().getTypeName(), annotations(hierarchy, m),
+        m.getGenericReturnType().getTypeName(), exceptions, parameterAnnotations(hierarchy, m));
     return new LocalService(d, target, m, invoker(hierarchy, m));
   }
 
@@ -101,7 +106,8 @@ final class ServiceScanner {
   /** Supplies container identity and a fresh service id for each prepared service. */
   interface DescriptorFactory {
     ServiceDescriptor create(String name, List<String> parameterNames, List<String> parameterTypeNames,
-        String returnTypeName, List<Annotation> annotations);
+        String returnTypeName, List<Annotation> annotations, String genericReturnTypeName,
+        List<String> exceptionTypeNames, List<List<Annotation>> parameterAnnotations);
   }
 
   private static MethodHandle invoker(List<Class<?>> hierarchy, Method m)
@@ -171,6 +177,37 @@ final class ServiceScanner {
       }
     }
     return new ArrayList<>(byType.values());
+  }
+
+  /**
+   * Per parameter: its own annotations, then those of the same parameter in the declarations the
+   * method overrides, one per type (as for the method's own annotations).
+   */
+  private static List<List<Annotation>> parameterAnnotations(List<Class<?>> hierarchy, Method m) {
+    List<Map<Class<? extends Annotation>, Annotation>> byType = new ArrayList<>();
+    for (Annotation[] own : m.getParameterAnnotations()) {
+      Map<Class<? extends Annotation>, Annotation> map = new LinkedHashMap<>();
+      for (Annotation a : own) {
+        map.putIfAbsent(a.annotationType(), a);
+      }
+      byType.add(map);
+    }
+    for (Class<?> t : hierarchy) {
+      Method decl = declared(t, m);
+      if (decl != null) {
+        Annotation[][] inherited = decl.getParameterAnnotations();
+        for (int i = 0; i < inherited.length && i < byType.size(); i++) {
+          for (Annotation a : inherited[i]) {
+            byType.get(i).putIfAbsent(a.annotationType(), a);
+          }
+        }
+      }
+    }
+    List<List<Annotation>> result = new ArrayList<>(byType.size());
+    for (Map<Class<? extends Annotation>, Annotation> map : byType) {
+      result.add(new ArrayList<>(map.values()));
+    }
+    return result;
   }
 
   private static Method declared(Class<?> t, Method m) {

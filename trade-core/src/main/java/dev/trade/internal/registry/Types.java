@@ -74,12 +74,8 @@ public final class Types {
     if (p != null) {
       return p;
     }
-    int dims = 0;
-    String base = typeName;
-    while (base.endsWith("[]")) {
-      base = base.substring(0, base.length() - 2);
-      dims++;
-    }
+    int dims = dimensions(typeName);
+    String base = typeName.substring(0, typeName.length() - 2 * dims);
     Class<?> c = PRIMITIVES.get(base);
     if (c == null) {
       try {
@@ -92,6 +88,45 @@ public final class Types {
       c = c.arrayType();
     }
     return c;
+  }
+
+  /**
+   * The {@link Class#getName()} form of a {@link Class#getTypeName()}: arrays in descriptor form
+   * ({@code double[]} → {@code [D}, {@code java.lang.String[]} → {@code [Ljava.lang.String;}),
+   * every other name unchanged. Pure text: no class is loaded.
+   */
+  public static String binaryName(String typeName) {
+    if (!typeName.endsWith("[]")) {
+      return typeName;
+    }
+    int dims = dimensions(typeName);
+    String base = typeName.substring(0, typeName.length() - 2 * dims);
+    String element;
+    Class<?> p = PRIMITIVES.get(base);
+    if (p != null) {
+      element = p.arrayType().getName().substring(1); // "[I" → "I"
+    } else {
+      element = "L" + base + ";";
+    }
+    return "[".repeat(dims) + element;
+  }
+
+  /**
+   * The name TRADE reports for a parameter type: {@link #binaryName}, with a primitive type replaced
+   * by its box ({@code int} → {@code java.lang.Integer}).
+   */
+  public static String boxedBinaryName(String typeName) {
+    Class<?> p = PRIMITIVES.get(typeName);
+    return p != null ? box(p).getName() : binaryName(typeName);
+  }
+
+  /** How many {@code []} end a type name. */
+  private static int dimensions(String typeName) {
+    int dims = 0;
+    for (int end = typeName.length(); typeName.startsWith("[]", end - 2); end -= 2) {
+      dims++;
+    }
+    return dims;
   }
 
   /** True when a value of type {@code given} can be passed where {@code declared} is expected. */

@@ -381,8 +381,10 @@ class HostileInputTest {
   void annotationEntryLengthMustMatch() throws Exception {
     byte[] bytes = codec.encode(new FakeInfo(TestTypes.descriptor(ServiceInfoCodingTest.Annotated.class
         .getMethod("plain").getAnnotations())));
-    // the descriptor without annotations ends with the annotation count: the first entry follows
-    int at = codec.encode(new FakeInfo(TestTypes.descriptor())).length;
+    // the encodings with and without annotations first differ in the annotation count; the first
+    // entry follows it
+    byte[] without = codec.encode(new FakeInfo(TestTypes.descriptor()));
+    int at = Arrays.mismatch(bytes, without) + 1;
     assertEquals(2, bytes[at - 1]);
     int length = ByteBuffer.wrap(bytes, at, 4).getInt();
     for (int bad : new int[] {length - 1, length + 1, 100_000, 0, -5, Integer.MIN_VALUE}) {

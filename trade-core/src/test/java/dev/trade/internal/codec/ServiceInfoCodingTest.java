@@ -103,15 +103,54 @@ class ServiceInfoCodingTest {
     assertEquals(back.descriptor, descriptor(original)); // the descriptors are equal as values
   }
 
+  /** A codec whose allow-list refuses this test package explicitly. */
+  private static Codec refusingCodec() {
+    AllowList refusing = AllowList.withDefaults();
+    refusing.add("!dev.trade.internal.codec.*");
+    return new Codec(refusing, Limits.DEFAULT, new TestTypes.FakeBinding());
+  }
+
   @Test
-  void annotationsWhoseClassIsRefusedAreSkipped() throws Exception {
-    ServiceDescriptor d = descriptor(annotationsOf("plain"));
+  void annotationsAKnownClassOfWhichTheAllowListDoesNotNameAreDecoded() throws Exception {
+    // The stranger's allow-list does not name this package; the annotation type and the enum and
+    // annotation types its members declare (Color, Inner) are known here, so @Action arrives.
+    ServiceDescriptor d = descriptor(annotationsOf("moveTo"));
     FakeInfo back = (FakeInfo) TestTypes.strangerCodec().decode(codec.encode(new FakeInfo(d)), loader());
+    assertEquals(d.annotations(), back.descriptor.annotations());
+    Action action = (Action) back.descriptor.annotations().get(1);
+    assertSame(Color.RED, action.color());
+  }
+
+  @Test
+  void annotationsWhoseClassIsRefusedOrUnknownAreSkipped() throws Exception {
+    ServiceDescriptor d = descriptor(annotationsOf("plain"));
+    FakeInfo back = (FakeInfo) refusingCodec().decode(codec.encode(new FakeInfo(d)), loader());
     List<Annotation> kept = back.descriptor.annotations();
-    assertEquals(1, kept.size()); // @Deprecated (java.lang) stays, the test package's @Action not
+    assertEquals(1, kept.size()); // @Deprecated (java.lang) stays, the refused package's @Action not
     Deprecated deprecated = assertInstanceOf(Deprecated.class, kept.get(0));
     assertEquals("1.0", deprecated.since());
     assertEquals(annotationsOf("plain")[0], deprecated);
+
+    // The same name with one letter changed: a class this JVM does not have.
+    byte[] bytes = codec.encode(new FakeInfo(d));
+    byte[] name = Action.class.getName().getBytes(java.nio.charset.StandardCharsets.UTF_8);
+    int at = indexOf(bytes, name);
+    bytes[at + name.length - 1] = 'X';
+    kept = ((FakeInfo) codec.decode(bytes, loader())).descriptor.annotations();
+    assertEquals(List.of(annotationsOf("plain")[0]), kept);
+  }
+
+  private static int indexOf(byte[] haystack, byte[] needle) {
+    outer:
+    for (int i = 0; i + needle.length <= haystack.length; i++) {
+      for (int j = 0; j < needle.length; j++) {
+        if (haystack[i + j] != needle[j]) {
+          continue outer;
+        }
+      }
+      return i;
+    }
+    throw new AssertionError("not found");
   }
 
   @Test
@@ -120,8 +159,25 @@ class ServiceInfoCodingTest {
     Object back = codec.decode(codec.encode(action), loader());
     assertEquals(action, back);
     assertSame(action, codec.copy(action, loader()));
+    assertEquals(action, TestTypes.strangerCodec().decode(codec.encode(action), loader()));
     assertThrows(dev.trade.TRADESerializationException.class,
-        () -> TestTypes.strangerCodec().decode(codec.encode(action), loader()));
+        () -> refusingCodec().decode(codec.encode(action), loader()));
+  }
+
+  @Test
+  void aClassThatIsNotAnAnnotationIsRefusedInPlaceOfOne() throws Exception {
+    byte[] bytes = codec.encode(annotationsOf("moveTo")[1]);
+    String fake = Color.class.getName(); // same package, an enum: must not pass as an annotation
+    String real = Action.class.getName();
+    ByteSink out = new ByteSink(64);
+    out.writeByte(Tags.ANNOTATION);
+    out.writeText(fake);
+    int headerLength = 1 + 1 + real.length();
+    out.writeBytes(bytes, headerLength, bytes.length - headerLength);
+    dev.trade.TRADESerializationException e = assertThrows(
+        dev.trade.TRADESerializationException.class,
+        () -> TestTypes.strangerCodec().decode(out.toByteArray(), loader()));
+    assertTrue(e.getMessage().contains("SERIALIZATIONALLOWLIST"), e.getMessage());
   }
 
   @Test

@@ -18,13 +18,33 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * Resolution order of {@link Settings#load}: system property, environment, class path,
- * then defaults.
+ * Resolution order of {@link Settings#load}: system property, environment, working directory,
+ * class path, then defaults.
  */
 class SettingsLoadTest {
   private static final Function<String, String> UNSET = name -> null;
 
   @TempDir Path dir;
+
+  /** Loads with a working directory that holds no trade.properties. */
+  private Settings load(Function<String, String> properties, Function<String, String> environment,
+      ClassLoader loader) {
+    return Settings.load(properties, environment, dir.resolve("empty"), loader);
+  }
+
+  @Test
+  void aFileInTheWorkingDirectoryComesAfterTheNamedFilesAndBeforeTheClassPath() throws IOException {
+    Path cwd = Files.createDirectories(dir.resolve("cwd"));
+    Files.writeString(cwd.resolve("trade.properties"), "CONTAINERNAME=from-working-directory\n");
+    Path fromEnv = write("env.properties", "CONTAINERNAME=from-env\n");
+    ClassLoader withResource = loaderWith("CONTAINERNAME=from-class-path\n");
+    assertEquals("from-working-directory",
+        Settings.load(UNSET, UNSET, cwd, withResource).containerName());
+    assertEquals("from-env", Settings.load(UNSET, only(Settings.PATH_ENV, fromEnv.toString()), cwd,
+        withResource).containerName());
+    assertEquals("from-class-path",
+        Settings.load(UNSET, UNSET, dir.resolve("empty"), withResource).containerName());
+  }
 
   @Test
   void systemPropertyBeatsEnvironmentBeatsClassPathBeatsDefaults() throws IOException {
@@ -35,18 +55,18 @@ class SettingsLoadTest {
     Function<String, String> env = only(Settings.PATH_ENV, fromEnv.toString());
 
     assertEquals("from-property",
-        Settings.load(property, env, withResource).containerName());
+        load(property, env, withResource).containerName());
     assertEquals("from-env",
-        Settings.load(UNSET, env, withResource).containerName());
+        load(UNSET, env, withResource).containerName());
     assertEquals("from-class-path",
-        Settings.load(UNSET, UNSET, withResource).containerName());
-    assertSame(Settings.defaults(), Settings.load(UNSET, UNSET, emptyLoader()));
+        load(UNSET, UNSET, withResource).containerName());
+    assertSame(Settings.defaults(), load(UNSET, UNSET, emptyLoader()));
   }
 
   @Test
   void blankPathCountsAsUnset() throws IOException {
     Path fromEnv = write("env.properties", "CONTAINERNAME=from-env\n");
-    assertEquals("from-env", Settings.load(
+    assertEquals("from-env", load(
         only(Settings.PATH_PROPERTY, " "), only(Settings.PATH_ENV, fromEnv.toString()),
         emptyLoader()).containerName());
   }
@@ -56,12 +76,12 @@ class SettingsLoadTest {
     Path missing = dir.resolve("nope.properties");
     ClassLoader withResource = loaderWith("CONTAINERNAME=from-class-path\n");
     IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () ->
-        Settings.load(only(Settings.PATH_PROPERTY, missing.toString()), UNSET, withResource));
+        load(only(Settings.PATH_PROPERTY, missing.toString()), UNSET, withResource));
     assertEquals("system property trade.properties.path=" + missing + ": no such file ("
         + missing.toAbsolutePath() + ")", e.getMessage());
 
     e = assertThrows(IllegalArgumentException.class, () ->
-        Settings.load(UNSET, only(Settings.PATH_ENV, missing.toString()), withResource));
+        load(UNSET, only(Settings.PATH_ENV, missing.toString()), withResource));
     assertEquals("environment variable TRADE_PROPERTIES_PATH=" + missing + ": no such file ("
         + missing.toAbsolutePath() + ")", e.getMessage());
   }
@@ -69,7 +89,7 @@ class SettingsLoadTest {
   @Test
   void directoryIsNotAFile() {
     IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () ->
-        Settings.load(only(Settings.PATH_PROPERTY, dir.toString()), UNSET, emptyLoader()));
+        load(only(Settings.PATH_PROPERTY, dir.toString()), UNSET, emptyLoader()));
     assertEquals("system property trade.properties.path=" + dir + ": not a regular file ("
         + dir.toAbsolutePath() + ")", e.getMessage());
   }
@@ -78,7 +98,7 @@ class SettingsLoadTest {
   void badValueInAFileNamesTheFile() throws IOException {
     Path file = write("bad.properties", "# hub\nBROADCASTPORT = 70000\n");
     IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () ->
-        Settings.load(only(Settings.PATH_PROPERTY, file.toString()), UNSET, emptyLoader()));
+        load(only(Settings.PATH_PROPERTY, file.toString()), UNSET, emptyLoader()));
     assertEquals(file.toAbsolutePath() + ": BROADCASTPORT=70000: expected a port 1..65535",
         e.getMessage());
   }
@@ -88,7 +108,7 @@ class SettingsLoadTest {
     ClassLoader loader = loaderWith("BROADCASTPROT=1\n");
     URL resource = loader.getResource("trade.properties");
     IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () ->
-        Settings.load(UNSET, UNSET, loader));
+        load(UNSET, UNSET, loader));
     assertEquals(resource + ": unknown key 'BROADCASTPROT' (did you mean BROADCASTPORT?)",
         e.getMessage());
   }
@@ -100,7 +120,7 @@ class SettingsLoadTest {
         "STARTBROADCAST=false", "STARTDISCOVERY=false", "STARTACCEPTINGCONNECTIONS=true",
         "SERVERIPS=127.0.0.1@10002", "CONNECTCONTAINERS=", "SCANFORSERVER=false",
         "RUNWEBSERVER=false", ""));
-    Settings s = Settings.load(only(Settings.PATH_PROPERTY, file.toString()), UNSET,
+    Settings s = load(only(Settings.PATH_PROPERTY, file.toString()), UNSET,
         emptyLoader());
     assertEquals(Settings.defaults().with("STARTACCEPTINGCONNECTIONS", "true")
         .with("SERVERIPS", "127.0.0.1@10002").with("SCANFORSERVER", "false"), s);
@@ -113,7 +133,7 @@ class SettingsLoadTest {
     Path latin1 = dir.resolve("latin1.properties");
     Files.write(latin1, "CONTAINERNAME=Bürobot\n".getBytes(ISO_8859_1));
     for (Path file : new Path[] {utf8, latin1}) {
-      assertEquals("Bürobot", Settings.load(
+      assertEquals("Bürobot", load(
           only(Settings.PATH_PROPERTY, file.toString()), UNSET, emptyLoader()).containerName());
     }
   }
@@ -122,7 +142,8 @@ class SettingsLoadTest {
   void loadWithoutInjectionUsesTheRealSources() {
     // The test class path ships no trade.properties resource; the JVM may still name a file.
     assumeTrue(System.getProperty(Settings.PATH_PROPERTY) == null
-        && System.getenv(Settings.PATH_ENV) == null, "a settings path is set for this JVM");
+        && System.getenv(Settings.PATH_ENV) == null
+        && !Files.exists(Path.of(Settings.RESOURCE)), "a settings file is set for this JVM");
     assertSame(Settings.defaults(), Settings.load());
   }
 

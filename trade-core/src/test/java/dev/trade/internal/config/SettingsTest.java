@@ -87,7 +87,8 @@ class SettingsTest {
         "BROADCASTPORT", "BROADCASTINTERVAL", "DISCOVERYTIMEOUT", "CALLCONTAINERDISCOVERYTIMEOUT",
         "STARTACCEPTINGCONNECTIONS", "SERVERIPS", "CONNECTCONTAINERS", "SCANFORSERVER",
         "TIMEOUT_CLIENT_SOCKET", "CALLCHECKTIME", "USEENCRYPTION", "CREDENTIALS", "TRADESYSID",
-        "COPYDATAFORLOCALINVOKES", "CALLTIMEOUT", "HEARTBEATINTERVAL", "FAILURETIMEOUT",
+        "COPYDATAFORLOCALINVOKES", "KEEPTRYING", "NETWORKINTERFACE", "CALLTIMEOUT",
+        "HEARTBEATINTERVAL", "FAILURETIMEOUT",
         "DISCOVERYRANGE", "DISCOVERYINTERFACES", "DISCOVERYCLOCKSKEW", "SERIALIZATIONALLOWLIST",
         "MAXFRAMESIZE"), List.copyOf(map.keySet()));
     assertEquals("33333", map.get("BROADCASTPORT"));
@@ -248,5 +249,15 @@ class SettingsTest {
         () -> Settings.defaults().with("CALLTIMEOUT", null)).getMessage());
     assertEquals("properties == null", assertThrows(NullPointerException.class,
         () -> Settings.fromProperties(null)).getMessage());
+  }
+
+  @Test
+  void tradesNetworkInterfaceStandsInForAnEmptyDiscoveryInterfaces() {
+    Settings trade = Settings.defaults().with("NETWORKINTERFACE", "eth1");
+    assertEquals(List.of("eth1"), trade.discoveryInterfaces());
+    assertEquals(List.of("wlan0"), trade.with("DISCOVERYINTERFACES", "wlan0").discoveryInterfaces());
+    assertEquals(List.of(), Settings.defaults().discoveryInterfaces());
+    assertEquals(true, Settings.defaults().keepTrying());
+    assertEquals(false, Settings.defaults().with("KEEPTRYING", "false").keepTrying());
   }
 }

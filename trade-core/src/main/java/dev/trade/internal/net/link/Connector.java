@@ -153,6 +153,25 @@ public final class Connector {
     restart(address);
   }
 
+  /**
+   * Connects once to a configured address and never again (KEEPTRYING=false): a failure is
+   * reported at WARNING, since nothing will retry it.
+   */
+  public void dialOnce(InetSocketAddress address) {
+    try {
+      workers.execute(() -> {
+        try {
+          connect(address);
+        } catch (IOException | Handshake.Failure | RuntimeException e) {
+          LOG.log(Level.WARNING, "cannot connect to {0}: {1}; not retrying (KEEPTRYING=false)",
+              address, e.getMessage());
+        }
+      });
+    } catch (RejectedExecutionException e) {
+      // Closing: nothing to connect for.
+    }
+  }
+
   /** Connects once to an address heard from discovery (no retries: it announces again). */
   public void connectOnce(InetSocketAddress address) {
     try {

@@ -72,7 +72,8 @@ final class CallServer {
       ClassLoader loader = s.target().getClass().getClassLoader();
       Object[] args = new Object[count];
       for (int i = 0; i < count; i++) {
-        args[i] = codec.read(in, loader == null ? ClassLoader.getSystemClassLoader() : loader);
+        args[i] = codec.read(in, loader == null ? ClassLoader.getSystemClassLoader() : loader,
+            s.declaredTypes());
       }
       CallContext context = ContextCoding.read(in);
       long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);

@@ -22,6 +22,7 @@ import java.io.IOException;
 import java.lang.System.Logger.Level;
 import java.lang.System.Logger;
 import java.util.Map;
+import java.util.Set;
 import java.util.UUID;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
@@ -103,7 +104,7 @@ public final class RemoteCalls {
 
   /** Calls a service of another container and waits for its reply until the deadline. */
   public Object call(ServiceDescriptor d, Object[] args, CallContext context, long deadlineNanos,
-      ClassLoader loader) throws TRADEException {
+      ClassLoader loader, Set<String> declared) throws TRADEException {
     UUID destination = containerIds.get(d.containerId());
     if (destination == null) {
       if (containerIds.size() >= MAX_IDS) {
@@ -164,7 +165,7 @@ public final class RemoteCalls {
       Thread.currentThread().interrupt();
       throw new TRADEException("Interrupted while waiting for " + d.signature());
     }
-    return decodeReply(d, reply, loader);
+    return decodeReply(d, reply, loader, declared);
   }
 
   /**
@@ -208,15 +209,15 @@ public final class RemoteCalls {
     return Frames.finish(out);
   }
 
-  private Object decodeReply(ServiceDescriptor d, byte[] payload, ClassLoader loader)
-      throws TRADEException {
+  private Object decodeReply(ServiceDescriptor d, byte[] payload, ClassLoader loader,
+      Set<String> declared) throws TRADEException {
     ByteSource in = ByteSource.of(payload, Frames.ROUTING + 8, payload.length - Frames.ROUTING - 8);
     int status = in.readUnsignedByte();
     switch (status) {
       case Wire.OK:
-        return codec.read(in, loader);
+        return codec.read(in, loader, declared);
       case Wire.FAILED_INVOCATION:
-        Object t = codec.read(in, loader);
+        Object t = codec.read(in, loader, declared);
         Throwable cause = t instanceof Throwable ? (Throwable) t : null;
         throw new TRADEInvocationException("Service " + d.signature() + " threw "
             + (cause == null ? "an exception" : cause.toString()), cause);
