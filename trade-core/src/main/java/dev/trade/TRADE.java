@@ -1,7 +1,9 @@
 package dev.trade;
 
 import java.lang.annotation.Annotation;
+import java.time.Duration;
 import java.util.Collection;
+import java.util.List;
 
 /**
  * The JVM's default {@link TRADEContainer}, as static methods: the API TRADE users write against.
@@ -95,22 +97,40 @@ public final class TRADE {
     return getDefaultContainer().getAvailableServices(constraints);
   }
 
-  /** See {@link TRADEContainer#requestNotification}. */
-  public static void requestNotification(Object listener, String type,
-      TRADEServiceConstraints constraints, Object argument, String callbackMethod) throws TRADEException {
-    getDefaultContainer().requestNotification(listener, type, constraints, argument, callbackMethod);
+  /** See {@link TRADEContainer#requestNotification(Object, String, Object, List, String)}. */
+  public static void requestNotification(Object listener, String type, Object argument,
+      List<TRADEServiceInfo> services, String callbackMethod) throws TRADEException {
+    getDefaultContainer().requestNotification(listener, type, argument, services, callbackMethod);
   }
 
-  /** See {@link TRADEContainer#cancelNotification}. */
-  public static void cancelNotification(Object listener, String type,
-      TRADEServiceConstraints constraints) throws TRADEException {
-    getDefaultContainer().cancelNotification(listener, type, constraints);
+  /** See {@link TRADEContainer#requestNotification(String, Object, List, TRADEServiceInfo)}. */
+  public static String requestNotification(String type, Object argument,
+      List<TRADEServiceInfo> services, TRADEServiceInfo callback) throws TRADEException {
+    return getDefaultContainer().requestNotification(type, argument, services, callback);
+  }
+
+  /** See {@link TRADEContainer#cancelNotification(Object, String, Object)}. */
+  public static void cancelNotification(Object listener, String type, Object argument)
+      throws TRADEException {
+    getDefaultContainer().cancelNotification(listener, type, argument);
+  }
+
+  /** See {@link TRADEContainer#cancelNotification(String)}. */
+  public static boolean cancelNotification(String id) throws TRADEException {
+    return getDefaultContainer().cancelNotification(id);
   }
 
   /** See {@link TRADEContainer#registerNotificationNowOrWhenJoined}. */
-  public static void registerNotificationNowOrWhenJoined(Object listener,
+  public static Collection<TRADEServiceInfo> registerNotificationNowOrWhenJoined(Object listener,
       TRADEServiceConstraints constraints, String callbackMethod) throws TRADEException {
-    getDefaultContainer().registerNotificationNowOrWhenJoined(listener, constraints, callbackMethod);
+    return getDefaultContainer().registerNotificationNowOrWhenJoined(listener, constraints,
+        callbackMethod);
+  }
+
+  /** See {@link TRADEContainer#waitForService}. */
+  public static TRADEServiceInfo waitForService(TRADEServiceConstraints constraints,
+      Duration timeout) throws TRADEException {
+    return getDefaultContainer().waitForService(constraints, timeout);
   }
 
   /** See {@link TRADEContainer#setDiscovery(boolean)}. */

@@ -157,11 +157,12 @@ class NotificationsTest {
     Recorder r = new Recorder();
     TRADEBadArgumentsException type = assertThrows(TRADEBadArgumentsException.class,
         () -> trade.requestNotification(r, "sometimes", null, null, "joined"));
-    assertEquals("Unknown notification type 'sometimes'; supported: joined, left", type.getMessage());
+    assertEquals("Unknown notification type 'sometimes'; supported: joined, left, once, after, at,"
+        + " every, if, when", type.getMessage());
     TRADEBadArgumentsException missing = assertThrows(TRADEBadArgumentsException.class,
         () -> trade.requestNotification(r, "joined", null, null, "nothing"));
     assertTrue(missing.getMessage().startsWith("Callback org.example.net.NotificationsTest$Recorder"
-        + ".nothing(TRADEServiceInfo) not usable: there is no public method"), missing.getMessage());
+        + ".nothing not usable: there is no public method"), missing.getMessage());
     TRADEBadArgumentsException plain = assertThrows(TRADEBadArgumentsException.class,
         () -> trade.requestNotification(r, "joined", null, null, "notAService"));
     assertTrue(plain.getMessage().endsWith("it must carry @TRADEService (callbacks are services)"),

@@ -17,11 +17,16 @@ import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.codec.Limits;
 import dev.trade.internal.config.Settings;
 import dev.trade.internal.net.Network;
+import dev.trade.internal.notify.NotificationClient;
+import dev.trade.internal.notify.NotificationService;
+import dev.trade.internal.notify.Notifications;
 import dev.trade.internal.registry.Entry;
 import dev.trade.internal.registry.LocalService;
+import dev.trade.internal.registry.Query;
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
 import dev.trade.internal.registry.Types;
+import dev.trade.internal.system.SystemGroup;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.net.InetSocketAddress;
@@ -29,16 +34,26 @@ import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.UUID;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionException;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.Function;
 
 /**
  * The machinery behind one {@code TRADEContainer}: identity, registry and the call chain.
  *
  * <p>A call takes one path: {@code route → (local: [copy] → host chain → [copy] | remote)}, where
  * the host chain ({@code hooks → locks → invoke}) runs in the container that provides the service,
- * so that it sees calls from everywhere. This class is safe for concurrent use.
+ * so that it sees calls from everywhere.
+ *
+ * <p>At start it registers its system providers (the notification service) in the reserved group
+ * {@link SystemGroup#NAME}, before networking starts, so that the first table it replicates holds
+ * them. This class is safe for concurrent use.
  */
 public final class ContainerCore implements ServiceCaller {
   private static final AtomicInteger INSTANCES = new AtomicInteger();
@@ -63,14 +78,19 @@ public final class ContainerCore implements ServiceCaller {
   /** Declared return types of services called from here, by type name; see declaredReturnType. */
   private final Map<String, Resolved> returnTypes = new ConcurrentHashMap<>();
   private volatile boolean closed;
+  private final Notifications notifications;
+  private final NotificationClient notificationClient;
+  /** Runs local asynchronous calls and decodes remote replies of asynchronous calls; lazily made. */
+  private ExecutorService asyncPool; // Guarded by this.
 
   /**
    * Builds the container and, when the settings ask for networking, starts it.
    *
    * @param infos how {@code TRADEServiceInfo} values are described and bound to this container
+   * @param constraints turns a {@code TRADEServiceConstraints} into a query; null for anything else
    * @throws UncheckedIOException if a listen address cannot be bound (the message names it)
    */
-  public ContainerCore(Settings settings, InfoBinding infos) {
+  public ContainerCore(Settings settings, InfoBinding infos, Function<Object, Query> constraints) {
     this.settings = settings;
     this.host = HostName.local();
     int n = INSTANCES.incrementAndGet();
@@ -90,6 +110,29 @@ public final class ContainerCore implements ServiceCaller {
     this.defaultTimeoutNanos = settings.callTimeout().toNanos();
     List<CallLink> hostLinks = new ArrayList<>();
     this.hostChain = new CallChain(hostLinks, new LocalInvoker(registry));
+    this.notifications = new Notifications(registry, this, infos, constraints, name);
+    this.notificationClient = new NotificationClient(registry, this, infos,
+        new NotificationClient.Registrar() {
+          @Override
+          public void register(Object listener) throws TRADEException {
+            ContainerCore.this.register(listener, Set.of());
+          }
+
+          @Override
+          public void registerSystem(Object listener) throws TRADEException {
+            ContainerCore.this.registerSystem(listener);
+          }
+
+          @Override
+          public void deregister(Object listener) throws TRADEException {
+            ContainerCore.this.deregister(listener);
+          }
+        }, constraints, name);
+    try {
+      registerSystem(new NotificationService(notifications, infos));
+    } catch (TRADEException e) {
+      throw new IllegalStateException("the notification service cannot be registered", e);
+    }
     if (networked(settings)) {
       network = startNetwork();
     }
@@ -127,6 +170,7 @@ public final class ContainerCore implements ServiceCaller {
    * deserialization allow-list, so values of those types can arrive.
    */
   public List<LocalService> register(Object provider, Collection<String> groups) throws TRADEException {
+    SystemGroup.refuse(groups);
     List<LocalService> services = registry.register(provider, groups);
     for (LocalService s : services) {
       for (Class<?> p : s.parameterTypes()) {
@@ -135,6 +179,16 @@ public final class ContainerCore implements ServiceCaller {
       allowList.addPackageOf(s.returnType());
     }
     return services;
+  }
+
+  /** Registers one of the container's own providers in the reserved group. */
+  private void registerSystem(Object provider) throws TRADEException {
+    registry.register(provider, Set.of(SystemGroup.NAME));
+  }
+
+  /** The requester's side of notifications (the static API's client of the notification services). */
+  public NotificationClient notifications() {
+    return notificationClient;
   }
 
   /** See {@link Registry#deregister}. */
@@ -239,10 +293,71 @@ public final class ContainerCore implements ServiceCaller {
       return callLocal(d, returnType, normalized, timeout);
     }
     long deadline = System.nanoTime() + timeout;
+    Network n = remote(d);
+    ClassLoader loader = prepareRemote(d, returnType, normalized);
+    return Returns.convert(d, returnType, n.call(d, normalized, deadline, loader));
+  }
+
+  /**
+   * Calls the service without waiting. A remote call holds no thread while its reply is
+   * outstanding (the link's reading thread completes it; the reply is decoded on this container's
+   * asynchronous pool); a local call runs on that pool, through the host chain like any call.
+   * Failures complete the future exceptionally with the {@code TRADEException} {@link #call}
+   * would throw.
+   */
+  @Override
+  public <T> CompletableFuture<T> callAsync(ServiceDescriptor d, Class<T> returnType, Object[] args,
+      long timeoutNanos) {
+    try {
+      Object[] normalized = Arguments.normalize(d, args);
+      long timeout = timeoutNanos > 0 ? timeoutNanos : defaultTimeoutNanos;
+      if (d.containerId().equals(id)) {
+        return CompletableFuture.supplyAsync(() -> {
+          try {
+            return callLocal(d, returnType, normalized, timeout);
+          } catch (TRADEException e) {
+            throw new CompletionException(e);
+          }
+        }, asyncPool());
+      }
+      long deadline = System.nanoTime() + timeout;
+      Network n = remote(d);
+      ClassLoader loader = prepareRemote(d, returnType, normalized);
+      return n.callAsync(d, normalized, deadline, loader, asyncPool()).thenApply(v -> {
+        try {
+          return Returns.convert(d, returnType, v);
+        } catch (TRADEException e) {
+          throw new CompletionException(e);
+        }
+      });
+    } catch (TRADEException e) {
+      return CompletableFuture.failedFuture(e);
+    }
+  }
+
+  private synchronized ExecutorService asyncPool() {
+    if (asyncPool == null) {
+      AtomicInteger n = new AtomicInteger();
+      asyncPool = Executors.newCachedThreadPool(r -> {
+        Thread t = new Thread(r, "trade-async-" + name + "-" + n.incrementAndGet());
+        t.setDaemon(true);
+        return t;
+      });
+    }
+    return asyncPool;
+  }
+
+  private Network remote(ServiceDescriptor d) throws TRADEException {
     Network n = network;
     if (n == null) {
       throw LocalInvoker.unavailable(d, "this container has no network");
     }
+    return n;
+  }
+
+  /** Checks a remote call before it is sent; returns the loader its reply is decoded with. */
+  private ClassLoader prepareRemote(ServiceDescriptor d, Class<?> returnType, Object[] normalized)
+      throws TRADEException {
     ClassLoader loader = callerLoader(returnType);
     Class<?> declared = declaredReturnType(d, loader);
     Returns.check(d, returnType, declared);
@@ -256,7 +371,7 @@ public final class ContainerCore implements ServiceCaller {
       throw new TRADEBadArgumentsException("Service " + d.signature() + " takes "
           + d.parameterTypeNames().size() + " arguments but got " + normalized.length);
     }
-    return Returns.convert(d, returnType, n.call(d, normalized, deadline, loader));
+    return loader;
   }
 
   /** The service's declared return type as {@code loader} sees it, or null if it cannot. */
@@ -308,10 +423,16 @@ public final class ContainerCore implements ServiceCaller {
   public void close() {
     if (!closed) {
       closed = true;
+      // Notifications stop first: disconnecting makes every other container's services
+      // unreachable from here, and reporting them as "left" would be false.
+      notifications.close();
       registry.deregisterAll();
       synchronized (this) {
         if (network != null) {
           network.close();
+        }
+        if (asyncPool != null) {
+          asyncPool.shutdownNow();
         }
       }
     }

@@ -20,6 +20,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.UUID;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.Executor;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.ExecutionException;
@@ -229,6 +230,12 @@ public final class Network implements AutoCloseable {
   public Object call(ServiceDescriptor d, Object[] args, long deadlineNanos, ClassLoader loader)
       throws TRADEException {
     return calls.call(d, args, deadlineNanos, loader);
+  }
+
+  /** Calls a remote service without waiting; see {@code RemoteCalls#callAsync}. */
+  public CompletableFuture<Object> callAsync(ServiceDescriptor d, Object[] args, long deadlineNanos,
+      ClassLoader loader, Executor executor) {
+    return calls.callAsync(d, args, deadlineNanos, loader, executor);
   }
 
   private Link nextHop(UUID container) {
