@@ -26,7 +26,7 @@ import org.junit.jupiter.api.Test;
 /** joined / left notifications, locally and across containers. */
 class NotificationsTest {
   private static final Duration WAIT = Duration.ofSeconds(10);
-  private final List<TRADEContainer> containers = new ArrayList<>();
+  private final Containers containers = new Containers();
 
   /** Records what it is told; its callbacks are services, as TRADE requires. */
   public static class Recorder {
@@ -64,17 +64,11 @@ class NotificationsTest {
 
   @AfterEach
   void close() {
-    containers.forEach(TRADEContainer::close);
+    containers.close();
   }
 
-  private TRADEContainer container(String name, String... props) {
-    TRADEContainer.Builder b = TRADEContainer.builder().name(name);
-    for (int i = 0; i < props.length; i += 2) {
-      b.property(props[i], props[i + 1]);
-    }
-    TRADEContainer c = b.build();
-    containers.add(c);
-    return c;
+  private TRADEContainer container(String name, String... settings) {
+    return containers.build(name, settings);
   }
 
   @Test

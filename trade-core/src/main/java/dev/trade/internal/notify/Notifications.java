@@ -22,6 +22,7 @@ import java.util.concurrent.Executor;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Function;
 
@@ -45,6 +46,12 @@ public final class Notifications implements Registry.Listener {
   private static final Logger LOG = System.getLogger("dev.trade.notify");
   /** How many ended notifications {@link #ended()} keeps, newest first. */
   static final int ENDED_KEPT = 64;
+  /**
+   * How long a request waits for its callback and service to be known here: a listener the
+   * requester registered just before asking, or a service of a third container, may reach this
+   * container's table a moment after the request.
+   */
+  static final long KNOWN_WAIT_MS = 5000;
 
   private final Registry registry;
   private final ServiceCaller caller;
@@ -58,6 +65,8 @@ public final class Notifications implements Registry.Listener {
   private final AtomicLong nextId = new AtomicLong();
   private final Deque<Map<String, Object>> ended = new ArrayDeque<>(); // Guarded by itself.
   private volatile boolean closed;
+  /** Notified when services are added to the registry: requests wait on it for theirs. */
+  private final Object added = new Object();
 
   /**
    * Notifications on the real clock; their threads start with the first delivery.
@@ -125,6 +134,7 @@ public final class Notifications implements Registry.Listener {
 
   /** Makes {@code l} live, checking under the registry's lock that what it uses is there. */
   private List<ServiceDescriptor> start(Live l, boolean deliverMatches) throws TRADEException {
+    awaitKnown(l);
     TRADEException[] missing = new TRADEException[1];
     List<ServiceDescriptor> matches = new ArrayList<>();
     registry.runLocked(() -> {
@@ -132,7 +142,8 @@ public final class Notifications implements Registry.Listener {
           : List.of(l.spec.callback(), l.spec.service())) {
         if (registry.entry(d) == null) {
           missing[0] = new TRADEServiceUnavailableException("Service not available: " + Live.where(d)
-              + " is not known in container " + registry.containerId());
+              + " is not known in container " + registry.containerId() + " (waited "
+              + KNOWN_WAIT_MS + " ms for it)");
           return;
         }
       }
@@ -158,6 +169,27 @@ public final class Notifications implements Registry.Listener {
     LOG.log(Level.DEBUG, "notification {0} ({1}) requested by {2}, callback {3}", l.id,
         l.spec.kind().label(), l.spec.requester(), Live.where(l.spec.callback()));
     return matches;
+  }
+
+  /** Waits up to {@link #KNOWN_WAIT_MS} for {@code l}'s callback and service to be known here. */
+  private void awaitKnown(Live l) throws TRADEException {
+    long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(KNOWN_WAIT_MS);
+    synchronized (added) {
+      while (registry.entry(l.spec.callback()) == null
+          || (l.spec.service() != null && registry.entry(l.spec.service()) == null)) {
+        long left = deadline - System.nanoTime();
+        if (left <= 0 || closed) {
+          return; // start() refuses it, naming what is missing
+        }
+        try {
+          TimeUnit.NANOSECONDS.timedWait(added, left);
+        } catch (InterruptedException e) {
+          Thread.currentThread().interrupt();
+          throw new TRADEException("Interrupted while waiting for " + Live.where(l.spec.callback())
+              + " to be known");
+        }
+      }
+    }
   }
 
   /**
@@ -198,6 +230,11 @@ public final class Notifications implements Registry.Listener {
   public void changed(List<Entry> added, List<Entry> removed) {
     if (closed) {
       return;
+    }
+    if (!added.isEmpty()) {
+      synchronized (this.added) {
+        this.added.notifyAll();
+      }
     }
     for (Live l : live.values()) {
       Kind k = l.spec.kind();
