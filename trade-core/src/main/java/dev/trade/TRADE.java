@@ -1,6 +1,8 @@
 package dev.trade;
 
+import java.time.Duration;
 import java.util.Collection;
+import java.util.List;
 import java.util.Objects;
 
 /**
@@ -223,33 +225,66 @@ public final class TRADE {
   }
 
   /**
-   * Asks for a callback when matching services join or leave: see
-   * {@link TRADEContainer#requestNotification}.
+   * Asks the default container for a notification whose callback is a method of {@code listener}:
+   * see {@link TRADEContainer#requestNotification(Object, String, Object, List, String)}.
    *
    * @param listener the object with the callback method; not null
-   * @param type {@code "joined"} or {@code "left"}
-   * @param constraints the services of interest (null: all)
-   * @param argument reserved; ignored by joined and left
-   * @param callbackMethod the name of the callback method
-   * @throws TRADEException {@link TRADEBadArgumentsException} for an unknown type or no usable
-   *     callback method
+   * @param type a notification type (docs/notifications.md): joined, left, once, after, at, every,
+   *     if or when
+   * @param argument what the type takes (constraints, a delay, an instant, a period), or null
+   * @param services the service called or the condition, as {@code services[0]}; null or empty
+   *     for types that take none
+   * @param callbackMethod the name of the listener's callback method
+   * @throws TRADEException {@link TRADEBadArgumentsException} for a bad request (nothing is
+   *     scheduled then), {@link TRADEServiceUnavailableException} when the service's container
+   *     is not reachable
    */
-  public static void requestNotification(Object listener, String type,
-      TRADEServiceConstraints constraints, Object argument, String callbackMethod) throws TRADEException {
-    getDefaultContainer().requestNotification(listener, type, constraints, argument, callbackMethod);
+  public static void requestNotification(Object listener, String type, Object argument,
+      List<TRADEServiceInfo> services, String callbackMethod) throws TRADEException {
+    getDefaultContainer().requestNotification(listener, type, argument, services, callbackMethod);
   }
 
   /**
-   * Cancels notifications: see {@link TRADEContainer#cancelNotification}.
+   * Asks for a notification whose callback is any service: see
+   * {@link TRADEContainer#requestNotification(String, Object, List, TRADEServiceInfo)}.
+   *
+   * @param type a notification type
+   * @param argument what the type takes, or null
+   * @param services the service called or the condition, as {@code services[0]}; or null
+   * @param callback the service called back
+   * @return the notification's id, which {@link #cancelNotification(String)} cancels from any
+   *     container
+   * @throws TRADEException as {@link #requestNotification(Object, String, Object, List, String)}
+   */
+  public static String requestNotification(String type, Object argument,
+      List<TRADEServiceInfo> services, TRADEServiceInfo callback) throws TRADEException {
+    return getDefaultContainer().requestNotification(type, argument, services, callback);
+  }
+
+  /**
+   * Cancels a listener's notifications: see
+   * {@link TRADEContainer#cancelNotification(Object, String, Object)}.
    *
    * @param listener the listener of the requests
-   * @param type {@code "joined"} or {@code "left"}
-   * @param constraints the requests' constraints; null for all of that type
+   * @param type their type
+   * @param argument their argument; null for all of that type
    * @throws TRADEException if {@code type} is unknown
    */
-  public static void cancelNotification(Object listener, String type,
-      TRADEServiceConstraints constraints) throws TRADEException {
-    getDefaultContainer().cancelNotification(listener, type, constraints);
+  public static void cancelNotification(Object listener, String type, Object argument)
+      throws TRADEException {
+    getDefaultContainer().cancelNotification(listener, type, argument);
+  }
+
+  /**
+   * Cancels a notification by its id, wherever it runs: see
+   * {@link TRADEContainer#cancelNotification(String)}.
+   *
+   * @param id what {@link #requestNotification(String, Object, List, TRADEServiceInfo)} returned
+   * @return whether it was live and is cancelled now
+   * @throws TRADEException if the container that runs it cannot be reached
+   */
+  public static boolean cancelNotification(String id) throws TRADEException {
+    return getDefaultContainer().cancelNotification(id);
   }
 
   /**
@@ -259,11 +294,27 @@ public final class TRADE {
    * @param listener the object with the callback method; not null
    * @param constraints the services of interest (null: all)
    * @param callbackMethod the name of the callback method
-   * @throws TRADEException as {@link #requestNotification}
+   * @return the services matching now, in preference order
+   * @throws TRADEException as {@link #requestNotification(Object, String, Object, List, String)}
    */
-  public static void registerNotificationNowOrWhenJoined(Object listener,
+  public static Collection<TRADEServiceInfo> registerNotificationNowOrWhenJoined(Object listener,
       TRADEServiceConstraints constraints, String callbackMethod) throws TRADEException {
-    getDefaultContainer().registerNotificationNowOrWhenJoined(listener, constraints, callbackMethod);
+    return getDefaultContainer().registerNotificationNowOrWhenJoined(listener, constraints,
+        callbackMethod);
+  }
+
+  /**
+   * Waits for a matching service to be available: see {@link TRADEContainer#waitForService}.
+   *
+   * @param constraints the service wanted
+   * @param timeout the longest to wait
+   * @return the service, in preference order the first
+   * @throws TRADEException {@link TRADETimeoutException} if none is available within
+   *     {@code timeout}
+   */
+  public static TRADEServiceInfo waitForService(TRADEServiceConstraints constraints,
+      Duration timeout) throws TRADEException {
+    return getDefaultContainer().waitForService(constraints, timeout);
   }
 
   /**

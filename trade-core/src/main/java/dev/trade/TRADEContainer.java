@@ -4,15 +4,14 @@ import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.config.LoggingConfig;
 import dev.trade.internal.config.Settings;
 import dev.trade.internal.container.ContainerCore;
-import dev.trade.internal.notify.Notifications;
 import dev.trade.internal.proxy.Proxies;
 import dev.trade.internal.registry.Entry;
 import dev.trade.internal.registry.LocalService;
-import dev.trade.internal.registry.Query;
 import dev.trade.internal.registry.ServiceDescriptor;
 import dev.trade.internal.registry.Suggestions;
 import java.lang.annotation.Annotation;
 import java.net.InetSocketAddress;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collection;
@@ -40,7 +39,6 @@ import java.util.Set;
  */
 public final class TRADEContainer implements AutoCloseable {
   private final ContainerCore core;
-  private final Notifications notifications;
   private final Proxies proxies;
 
   private TRADEContainer(Settings settings) {
@@ -54,9 +52,9 @@ public final class TRADEContainer implements AutoCloseable {
       public Object bind(ServiceDescriptor descriptor) {
         return TRADEContainer.this.bind(descriptor);
       }
-    });
-    this.notifications = new Notifications(core.registry(), TRADEServiceInfo.class, this::bind,
-        core.name());
+    }, argument -> argument == null ? new TRADEServiceConstraints().toQuery()
+        : argument instanceof TRADEServiceConstraints ? ((TRADEServiceConstraints) argument).toQuery()
+        : null);
     this.proxies = new Proxies(new Proxies.Services() {
       @Override
       public TRADEServiceInfo find(TRADEServiceConstraints constraints, String name,
@@ -274,63 +272,123 @@ public final class TRADEContainer implements AutoCloseable {
   }
 
   /**
-   * Asks for {@code listener.callbackMethod(TRADEServiceInfo)} to be called for every service
-   * matching {@code constraints} that becomes available ({@code "joined"}) or goes away
-   * ({@code "left"}) anywhere in the system from now on: registered or deregistered locally, or in
-   * a container that joins, leaves or dies. The callback must be a public {@code @TRADEService}
-   * method taking one {@code TRADEServiceInfo}: callbacks are services.
+   * Requests a notification whose callback is {@code listener}'s {@code @TRADEService} method
+   * {@code callbackMethod} (TRADE 1.1.1's form). Types and arguments (docs/notifications.md):
+   * {@code "joined"}/{@code "left"} (argument: {@code TRADEServiceConstraints} or null for all;
+   * the callback takes the {@code TRADEServiceInfo} that joined or left, anywhere in the system),
+   * {@code "once"} (calls {@code services[0]} with the argument's values, without blocking, and
+   * hands its result to the callback), {@code "after"} (a delay: {@code long} ms or
+   * {@code Duration}), {@code "at"} (an {@code Instant}), {@code "every"} (a period; with a
+   * service, its result each period), {@code "if"} (a time; calls back only if the condition
+   * {@code services[0]} is true then) and {@code "when"} (a period; calls back once, the first time
+   * the condition is true).
    *
-   * <p>Callbacks run on one delivery thread of this container, one event at a time, in the order
-   * the changes happened; each event reaches each matching request once. A callback that throws is
-   * logged and does not stop later deliveries.
+   * <p>The notification runs in the container providing {@code services[0]}, else in this one;
+   * every callback, condition and service is called as a service. A listener that is not
+   * registered yet is registered now, in no group; this container deregisters it again when
+   * {@link #cancelNotification(Object, String, Object)} cancels its last notification requested
+   * here (or call {@link #deregister}, which ends its notifications). Joined and left events reach
+   * the callback one at a time, in the order the changes happened; a callback that throws is logged
+   * and counted and does not end the notification.
    *
    * @param listener the object with the callback method; not null
-   * @param type {@code "joined"} or {@code "left"}
-   * @param constraints the services of interest (null: all)
-   * @param callbackMethod the name of the callback method
-   * @param argument reserved for notification types that take one; ignored by joined and left
-   * @throws TRADEBadArgumentsException an unknown type, or no usable callback method (the message
-   *     names the class and method and what is wrong)
+   * @param type a notification type: joined, left, once, after, at, every, if or when
+   * @param argument what the type takes (constraints, a delay, an instant, a period, with a
+   *     service's arguments after it), or null
+   * @param services the service called or the condition, as {@code services[0]}; null or empty
+   *     for types that take none
+   * @param callbackMethod the name of the listener's callback method
+   * @throws TRADEBadArgumentsException a bad request: an unknown type (the message lists the
+   *     supported ones), an argument of the wrong kind, a period below 1 ms, a missing service or
+   *     one that is not a condition, or no callback method that can take what the type delivers
+   *     (the message names the method and the parameter types expected); nothing is scheduled
+   * @throws TRADEServiceUnavailableException {@code services[0]}'s container is not reachable
    */
-  public void requestNotification(Object listener, String type, TRADEServiceConstraints constraints,
-      Object argument, String callbackMethod) throws TRADEException {
+  public void requestNotification(Object listener, String type, Object argument,
+      List<TRADEServiceInfo> services, String callbackMethod) throws TRADEException {
     checkOpen();
-    notifications.request(listener, type, query(constraints), callbackMethod);
+    core.notifications().request(listener, type, argument, services, callbackMethod);
   }
 
   /**
-   * Cancels the listener's notifications of {@code type} whose constraints equal
-   * {@code constraints}, or all of that type when {@code constraints} is null. Events already
-   * queued for a cancelled request are not delivered.
+   * Requests a notification whose callback is any service, of any container: see
+   * {@link #requestNotification(Object, String, Object, List, String)} for types and arguments.
+   *
+   * @param type a notification type
+   * @param argument what the type takes, or null
+   * @param services the service called or the condition, as {@code services[0]}; or null
+   * @param callback the service called back
+   * @return the notification's id, which {@link #cancelNotification(String)} cancels from any
+   *     container
+   * @throws TRADEException as {@link #requestNotification(Object, String, Object, List, String)}
+   */
+  public String requestNotification(String type, Object argument, List<TRADEServiceInfo> services,
+      TRADEServiceInfo callback) throws TRADEException {
+    checkOpen();
+    return core.notifications().request(type, argument, services, callback);
+  }
+
+  /**
+   * Cancels the listener's notifications of {@code type} requested through this container whose
+   * argument equals {@code argument}, or all of that type when {@code argument} is null. Events
+   * already queued for a cancelled notification are not delivered.
    *
    * @param listener the listener of the requests
-   * @param type {@code "joined"} or {@code "left"}
-   * @param constraints the requests' constraints; null for all of that type
-   * @throws TRADEException if {@code type} is unknown
+   * @param type their type
+   * @param argument their argument; null for all of that type
+   * @throws TRADEException {@link TRADEBadArgumentsException} for an unknown type
    */
-  public void cancelNotification(Object listener, String type, TRADEServiceConstraints constraints)
+  public void cancelNotification(Object listener, String type, Object argument)
       throws TRADEException {
-    notifications.cancel(listener, type, constraints == null ? null : constraints.toQuery());
+    core.notifications().cancel(listener, type, argument);
+  }
+
+  /**
+   * Cancels the notification {@code id}, wherever it runs.
+   *
+   * @param id what {@link #requestNotification(String, Object, List, TRADEServiceInfo)} returned
+   * @return whether it was live (false: it ended already, or was never known)
+   * @throws TRADEBadArgumentsException {@code id} is not a notification id
+   * @throws TRADEServiceUnavailableException the container that runs it is not known here
+   * @throws TRADEException another failure of the cancelling call
+   */
+  public boolean cancelNotification(String id) throws TRADEException {
+    checkOpen();
+    return core.notifications().cancel(id);
   }
 
   /**
    * Calls {@code listener.callbackMethod(TRADEServiceInfo)} now for every service already matching
    * {@code constraints}, and then for every one that joins: without a race between the two, so
-   * each service is delivered exactly once.
+   * each service is delivered exactly once. Cancel it as a {@code "joined"} notification.
    *
    * @param listener the object with the callback method; not null
    * @param constraints the services of interest (null: all)
    * @param callbackMethod the name of the callback method
-   * @throws TRADEException as {@link #requestNotification}
+   * @return the services matching now, in preference order (those called back at once)
+   * @throws TRADEException as {@link #requestNotification(Object, String, Object, List, String)}
    */
-  public void registerNotificationNowOrWhenJoined(Object listener,
+  public Collection<TRADEServiceInfo> registerNotificationNowOrWhenJoined(Object listener,
       TRADEServiceConstraints constraints, String callbackMethod) throws TRADEException {
     checkOpen();
-    notifications.requestNowOrWhenJoined(listener, query(constraints), callbackMethod);
+    return core.notifications().requestNowOrWhenJoined(listener, constraints, callbackMethod);
   }
 
-  private static Query query(TRADEServiceConstraints constraints) {
-    return (constraints == null ? new TRADEServiceConstraints() : constraints).toQuery();
+  /**
+   * The preferred service matching {@code constraints} now, or the first that joins within
+   * {@code timeout}: built on a joined notification, without polling.
+   *
+   * @param constraints null matches every service
+   * @param timeout the longest to wait
+   * @return the service
+   * @throws TRADETimeoutException if none matched within {@code timeout}
+   * @throws TRADEException if the container is closed meanwhile
+   */
+  public TRADEServiceInfo waitForService(TRADEServiceConstraints constraints, Duration timeout)
+      throws TRADEException {
+    Objects.requireNonNull(timeout, "timeout == null");
+    checkOpen();
+    return core.notifications().waitFor(constraints, timeout);
   }
 
   /**
@@ -399,7 +457,6 @@ public final class TRADEContainer implements AutoCloseable {
   @Override
   public void close() {
     proxies.close();
-    notifications.close();
     core.close();
   }
 

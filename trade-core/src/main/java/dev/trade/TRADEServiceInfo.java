@@ -11,8 +11,9 @@ import java.util.ArrayList;
 import java.util.Collection;
 import java.util.Collections;
 import java.util.List;
-import java.util.Objects;
 import java.util.LinkedHashSet;
+import java.util.Objects;
+import java.util.concurrent.CompletableFuture;
 
 /**
  * A handle to one provided service: what it is (name, parameters, return type, groups,
@@ -108,6 +109,26 @@ public final class TRADEServiceInfo implements Serializable, Cloneable {
   public <T> T call(Class<T> returnType, Object... args) throws TRADEException {
     Objects.requireNonNull(returnType, "returnType == null");
     return caller.call(descriptor, returnType, args, timeoutNanos);
+  }
+
+  /**
+   * Calls the service without blocking: the future completes with its result as {@code call}
+   * would return it, or exceptionally with the {@link TRADEException} {@code call} would throw
+   * ({@code get()} wraps it in an {@code ExecutionException}, {@code join()} in a
+   * {@code CompletionException}).
+   *
+   * <p>A remote call holds no thread while its reply is outstanding: the connection's reading
+   * thread completes it, and the reply is decoded on a pooled thread of the container, where
+   * dependent stages without an executor of their own run too. A local call runs on such a pooled
+   * thread. The call's deadline is this info's (see {@link #withTimeout}); when it passes, the
+   * future fails with {@link TRADETimeoutException}. A remote call that finds its connection
+   * congested fails at once with {@link TRADEServiceUnavailableException} rather than wait.
+   *
+   * @throws NullPointerException if {@code returnType} is null
+   */
+  public <T> CompletableFuture<T> callAsync(Class<T> returnType, Object... args) {
+    Objects.requireNonNull(returnType, "returnType == null");
+    return caller.callAsync(descriptor, returnType, args, timeoutNanos);
   }
 
   /**

@@ -27,7 +27,7 @@ import org.junit.jupiter.api.Test;
 /** joined / left notifications, locally and across containers. */
 class NotificationsTest {
   private static final Duration WAIT = Duration.ofSeconds(10);
-  private final List<TRADEContainer> containers = new ArrayList<>();
+  private final Containers containers = new Containers();
 
   /** Records what it is told; its callbacks are services, as TRADE requires. */
   public static class Recorder {
@@ -65,17 +65,11 @@ class NotificationsTest {
 
   @AfterEach
   void close() {
-    containers.forEach(TRADEContainer::close);
+    containers.close();
   }
 
-  private TRADEContainer container(String name, String... props) {
-    TRADEContainer.Builder b = TRADEContainer.builder().name(name);
-    for (int i = 0; i < props.length; i += 2) {
-      b.property(props[i], props[i + 1]);
-    }
-    TRADEContainer c = b.build();
-    containers.add(c);
-    return c;
+  private TRADEContainer container(String name, String... settings) {
+    return containers.build(name, settings);
   }
 
   @Test
@@ -158,11 +152,12 @@ class NotificationsTest {
     Recorder r = new Recorder();
     TRADEBadArgumentsException type = assertThrows(TRADEBadArgumentsException.class,
         () -> trade.requestNotification(r, "sometimes", null, null, "joined"));
-    assertEquals("Unknown notification type 'sometimes'; supported: joined, left", type.getMessage());
+    assertEquals("Unknown notification type 'sometimes'; supported: joined, left, once, after, at,"
+        + " every, if, when", type.getMessage());
     TRADEBadArgumentsException missing = assertThrows(TRADEBadArgumentsException.class,
         () -> trade.requestNotification(r, "joined", null, null, "nothing"));
     assertTrue(missing.getMessage().startsWith("Callback org.example.net.NotificationsTest$Recorder"
-        + ".nothing(TRADEServiceInfo) not usable: there is no public method"), missing.getMessage());
+        + ".nothing not usable: there is no public method"), missing.getMessage());
     TRADEBadArgumentsException plain = assertThrows(TRADEBadArgumentsException.class,
         () -> trade.requestNotification(r, "joined", null, null, "notAService"));
     assertTrue(plain.getMessage().endsWith("it must carry @TRADEService (callbacks are services)"),

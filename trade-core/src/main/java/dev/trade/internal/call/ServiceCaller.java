@@ -2,6 +2,7 @@ package dev.trade.internal.call;
 
 import dev.trade.TRADEException;
 import dev.trade.internal.registry.ServiceDescriptor;
+import java.util.concurrent.CompletableFuture;
 
 /**
  * What a {@code TRADEServiceInfo} calls through: the container it was obtained from (or decoded
@@ -24,4 +25,11 @@ public interface ServiceCaller {
    */
   <T> T call(ServiceDescriptor service, Class<T> returnType, Object[] args, long timeoutNanos)
       throws TRADEException;
+
+  /**
+   * Calls the service without waiting; the future fails with the {@code TRADEException} that
+   * {@link #call} would throw. A remote call holds no thread while its reply is outstanding.
+   */
+  <T> CompletableFuture<T> callAsync(ServiceDescriptor service, Class<T> returnType, Object[] args,
+      long timeoutNanos);
 }

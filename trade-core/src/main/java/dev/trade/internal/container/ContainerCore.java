@@ -20,11 +20,15 @@ import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.codec.Limits;
 import dev.trade.internal.config.Settings;
 import dev.trade.internal.net.Network;
-import dev.trade.internal.registry.DeclaredTypes;
+import dev.trade.internal.notify.NotificationClient;
+import dev.trade.internal.notify.NotificationService;
+import dev.trade.internal.notify.Notifications;
 import dev.trade.internal.registry.Entry;
 import dev.trade.internal.registry.LocalService;
+import dev.trade.internal.registry.Query;
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
+import dev.trade.internal.system.SystemGroup;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.lang.System.Logger;
@@ -32,15 +36,25 @@ import java.lang.System.Logger.Level;
 import java.net.InetSocketAddress;
 import java.util.Collection;
 import java.util.List;
+import java.util.Set;
 import java.util.UUID;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.Function;
 
 /**
  * The machinery behind one {@code TRADEContainer}: identity, registry and the call chain.
  *
  * <p>A call takes one path: {@code route → (local: [copy] → host chain → [copy] | remote)}, where
  * the host chain ({@link #hostLinks}) runs in the container that provides the service, so that it
- * sees calls from everywhere. This class is safe for concurrent use.
+ * sees calls from everywhere.
+ *
+ * <p>At start it registers its system providers (the notification service) in the reserved group
+ * {@link SystemGroup#NAME}, before networking starts, so that the first table it replicates holds
+ * them. This class is safe for concurrent use.
  */
 public final class ContainerCore implements ServiceCaller {
   private static final Logger LOG = System.getLogger("dev.trade.registry");
@@ -63,14 +77,19 @@ public final class ContainerCore implements ServiceCaller {
   // Written once under this' lock; networking may start later, when discovery is switched on.
   private volatile Network network;
   private volatile boolean closed;
+  private final Notifications notifications;
+  private final NotificationClient notificationClient;
+  /** Runs local asynchronous calls and decodes remote replies of asynchronous calls; lazily made. */
+  private ExecutorService asyncPool; // Guarded by this.
 
   /**
    * Builds the container and, when the settings ask for networking, starts it.
    *
    * @param infos how {@code TRADEServiceInfo} values are described and bound to this container
+   * @param constraints turns a {@code TRADEServiceConstraints} into a query; null for anything else
    * @throws UncheckedIOException if a listen address cannot be bound (the message names it)
    */
-  public ContainerCore(Settings settings, InfoBinding infos) {
+  public ContainerCore(Settings settings, InfoBinding infos, Function<Object, Query> constraints) {
     this.settings = settings;
     this.host = HostName.local();
     int n = INSTANCES.incrementAndGet();
@@ -91,6 +110,29 @@ public final class ContainerCore implements ServiceCaller {
     this.hostChain = new CallChain(hostLinks(), new LocalInvoker(registry));
     this.remote = new RemoteCaller(allowList, () -> network);
     this.self = Caller.of(uuid);
+    this.notifications = new Notifications(registry, this, infos, constraints, name);
+    this.notificationClient = new NotificationClient(registry, this, infos,
+        new NotificationClient.Registrar() {
+          @Override
+          public void register(Object listener) throws TRADEException {
+            ContainerCore.this.register(listener, Set.of());
+          }
+
+          @Override
+          public void registerSystem(Object listener) throws TRADEException {
+            ContainerCore.this.registerSystem(listener);
+          }
+
+          @Override
+          public void deregister(Object listener) throws TRADEException {
+            ContainerCore.this.deregister(listener);
+          }
+        }, constraints, name);
+    try {
+      registerSystem(new NotificationService(notifications, infos));
+    } catch (TRADEException e) {
+      throw new IllegalStateException("the notification service cannot be registered", e);
+    }
     if (networked(settings)) {
       network = startNetwork();
     }
@@ -128,6 +170,7 @@ public final class ContainerCore implements ServiceCaller {
    * deserialization allow-list, so values of those types can arrive.
    */
   public List<LocalService> register(Object provider, Collection<String> groups) throws TRADEException {
+    SystemGroup.refuse(groups);
     List<LocalService> services = registry.register(provider, groups);
     if (services.isEmpty()) {
       // Almost always a mistake (a missing annotation, a package-private method); the empty
@@ -143,6 +186,16 @@ public final class ContainerCore implements ServiceCaller {
       allowList.addPackageOf(s.returnType());
     }
     return services;
+  }
+
+  /** Registers one of the container's own providers in the reserved group. */
+  private void registerSystem(Object provider) throws TRADEException {
+    registry.register(provider, Set.of(SystemGroup.NAME));
+  }
+
+  /** The requester's side of notifications (the static API's client of the notification services). */
+  public NotificationClient notifications() {
+    return notificationClient;
   }
 
   /** See {@link Registry#deregister}. */
@@ -248,13 +301,50 @@ public final class ContainerCore implements ServiceCaller {
   public <T> T call(ServiceDescriptor d, Class<T> returnType, Object[] args, long timeoutNanos)
       throws TRADEException {
     Object[] normalized = Arguments.normalize(d, args);
-    if (normalized.length != d.parameterTypeNames().size()) {
-      throw CallErrors.argumentCount(d, normalized.length);
-    }
     long timeout = timeoutNanos > 0 ? timeoutNanos : defaultTimeoutNanos;
     return d.containerId().equals(id)
         ? callLocal(d, returnType, normalized, timeout)
         : remote.call(d, returnType, normalized, CallContext.EMPTY, timeout);
+  }
+
+  /**
+   * Calls the service without waiting, routed as {@link #call}. A remote call holds no thread while
+   * its reply is outstanding (the link's reading thread completes it; the reply is decoded on this
+   * container's asynchronous pool); a local call runs on that pool, through the host chain like any
+   * call. Failures complete the future exceptionally with the {@code TRADEException} {@link #call}
+   * would throw.
+   */
+  @Override
+  public <T> CompletableFuture<T> callAsync(ServiceDescriptor d, Class<T> returnType, Object[] args,
+      long timeoutNanos) {
+    try {
+      Object[] normalized = Arguments.normalize(d, args);
+      long timeout = timeoutNanos > 0 ? timeoutNanos : defaultTimeoutNanos;
+      if (d.containerId().equals(id)) {
+        return CompletableFuture.supplyAsync(() -> {
+          try {
+            return callLocal(d, returnType, normalized, timeout);
+          } catch (TRADEException e) {
+            throw new CompletionException(e);
+          }
+        }, asyncPool());
+      }
+      return remote.callAsync(d, returnType, normalized, CallContext.EMPTY, timeout, asyncPool());
+    } catch (TRADEException e) {
+      return CompletableFuture.failedFuture(e);
+    }
+  }
+
+  private synchronized ExecutorService asyncPool() {
+    if (asyncPool == null) {
+      AtomicInteger n = new AtomicInteger();
+      asyncPool = Executors.newCachedThreadPool(r -> {
+        Thread t = new Thread(r, "trade-async-" + name + "-" + n.incrementAndGet());
+        t.setDaemon(true);
+        return t;
+      });
+    }
+    return asyncPool;
   }
 
   /**
@@ -294,10 +384,16 @@ public final class ContainerCore implements ServiceCaller {
   public void close() {
     if (!closed) {
       closed = true;
+      // Notifications stop first: disconnecting makes every other container's services
+      // unreachable from here, and reporting them as "left" would be false.
+      notifications.close();
       registry.deregisterAll();
       synchronized (this) {
         if (network != null) {
           network.close();
+        }
+        if (asyncPool != null) {
+          asyncPool.shutdownNow();
         }
       }
     }

@@ -11,7 +11,10 @@ import dev.trade.internal.registry.ServiceDescriptor;
 import dev.trade.internal.registry.Types;
 import java.util.Map;
 import java.util.Set;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionException;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.Executor;
 import java.util.function.Supplier;
 
 /**
@@ -43,10 +46,45 @@ final class RemoteCaller {
   <T> T call(ServiceDescriptor d, Class<T> returnType, Object[] args, CallContext context,
       long timeoutNanos) throws TRADEException {
     long deadline = System.nanoTime() + timeoutNanos;
+    Network n = network(d);
+    ClassLoader loader = prepare(d, returnType);
+    return Returns.convert(d, returnType,
+        n.call(d, args, context, deadline, loader, declaredTypes(d, loader)));
+  }
+
+  /**
+   * As {@link #call}, without waiting: the future completes with the converted result (decoded on
+   * {@code executor}) or fails with the {@code TRADEException} that {@link #call} would throw. No
+   * thread waits while the reply is outstanding.
+   */
+  <T> CompletableFuture<T> callAsync(ServiceDescriptor d, Class<T> returnType, Object[] args,
+      CallContext context, long timeoutNanos, Executor executor) throws TRADEException {
+    long deadline = System.nanoTime() + timeoutNanos;
+    Network n = network(d);
+    ClassLoader loader = prepare(d, returnType);
+    return n.callAsync(d, args, context, deadline, loader, declaredTypes(d, loader), executor)
+        .thenApply(v -> {
+          try {
+            return Returns.convert(d, returnType, v);
+          } catch (TRADEException e) {
+            throw new CompletionException(e);
+          }
+        });
+  }
+
+  private Network network(ServiceDescriptor d) throws TRADEException {
     Network n = network.get();
     if (n == null) {
       throw CallErrors.gone(d, "this container has no network");
     }
+    return n;
+  }
+
+  /**
+   * Checks the requested return type against the declared one and lets the types the caller's own
+   * code names arrive; returns the loader the reply is decoded in.
+   */
+  private ClassLoader prepare(ServiceDescriptor d, Class<?> returnType) throws TRADEException {
     ClassLoader loader = callerLoader(returnType);
     Class<?> declared = declaredReturnType(d, loader);
     Returns.check(d, returnType, declared);
@@ -56,8 +94,7 @@ final class RemoteCaller {
       allowList.addPackageOf(declared);
     }
     allowList.addPackageOf(returnType);
-    return Returns.convert(d, returnType,
-        n.call(d, args, context, deadline, loader, declaredTypes(d, loader)));
+    return loader;
   }
 
   /**

@@ -29,6 +29,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.UUID;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.Executor;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
@@ -212,6 +213,13 @@ public final class Network implements AutoCloseable {
   public Object call(ServiceDescriptor d, Object[] args, CallContext context, long deadlineNanos,
       ClassLoader loader, Set<String> declared) throws TRADEException {
     return calls.call(d, args, context, deadlineNanos, loader, declared);
+  }
+
+  /** Calls a remote service without waiting; see {@code RemoteCalls#callAsync}. */
+  public CompletableFuture<Object> callAsync(ServiceDescriptor d, Object[] args,
+      CallContext context, long deadlineNanos, ClassLoader loader, Set<String> declared,
+      Executor executor) {
+    return calls.callAsync(d, args, context, deadlineNanos, loader, declared, executor);
   }
 
   private Link nextHop(UUID container) {

@@ -1,11 +1,13 @@
 package dev.trade.internal.registry;
 
+import dev.trade.internal.system.SystemGroup;
 import java.util.List;
 import java.util.Set;
 
 /**
  * An immutable snapshot of a {@code TRADEServiceConstraints}: a conjunction of constraints, minus
- * the negations, or any of the alternatives. Thread-safe.
+ * the negations, or any of the alternatives. A system service (reserved group) matches only a query
+ * whose {@code inGroups} names that group. Thread-safe.
  *
  * @param name method name, or null for any
  * @param argTypes exact parameter count and accepted types, or null for any
@@ -80,7 +82,7 @@ public record Query(
     if (notOnHosts.contains(d.host())) {
       return false;
     }
-    if (!d.groups().containsAll(inGroups)) {
+    if (!d.groups().containsAll(inGroups) || SystemGroup.hides(d.groups(), inGroups)) {
       return false;
     }
     for (String g : notInGroups) {

@@ -124,6 +124,12 @@ public final class Registry {
     return services;
   }
 
+  /** The services of {@code provider} registered here, or null when it is not registered. */
+  public synchronized List<LocalService> servicesOf(Object provider) {
+    List<LocalService> services = byProvider.get(provider);
+    return services == null ? null : List.copyOf(services);
+  }
+
   /** Removes every local service (used when the container closes). */
   public synchronized void deregisterAll() {
     List<LocalService> all = new ArrayList<>();

@@ -219,14 +219,15 @@ class DuplicateLinkTest {
         .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build();
         RawPeer old = RawPeer.connect(c, twin);
         RawPeer kept = RawPeer.connect(c, twin)) {
-      c.registerAllServices(new FreshLinkTest.Arm()); // its first service: id 1
+      c.registerAllServices(new FreshLinkTest.Arm()); // its first service
       Handshake.Peer provider = old.handshake("twin", 1);
       Await.until(WAIT, () -> c.getNeighbours().contains(twin.toString()), "the first link");
       kept.handshake("twin", 2);
       readToGoodbye(old); // retired, and still open until we close it
       Codec codec = new Codec(AllowList.withDefaults(), Limits.DEFAULT, InfoBinding.NONE);
       RemoteCalls us = new RemoteCalls(twin, codec, null, null, null, 1 << 20);
-      old.send(us.callFrame(provider.containerId(), 7, 1, 5_000, new Object[] {3}));
+      old.send(us.callFrame(provider.containerId(), 7, RawPeer.firstUserServiceId(c), 5_000,
+          new Object[] {3}));
       byte[] frame;
       do {
         frame = kept.readFrame(); // link states, tables and pings first

@@ -49,7 +49,7 @@ class FreshLinkTest {
   private void answeredOverTheLinkItCameBy(boolean forwarded) throws Exception {
     try (TRADEContainer server = TRADEContainer.builder().name("provider")
         .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build()) {
-      server.registerAllServices(new Arm()); // its first service: id 1
+      server.registerAllServices(new Arm()); // its first service
       String[] a = server.getServerAddresses().get(0).split("@");
       try (RawPeer p = RawPeer.connect(new InetSocketAddress(a[0], Integer.parseInt(a[1])))) {
         Handshake.Peer provider = p.handshake("early");
@@ -57,7 +57,8 @@ class FreshLinkTest {
         Codec codec = new Codec(AllowList.withDefaults(), Limits.DEFAULT, InfoBinding.NONE);
         UUID caller = forwarded ? UUID.randomUUID() : p.id;
         RemoteCalls us = new RemoteCalls(caller, codec, null, null, null, 1 << 20);
-        p.send(us.callFrame(provider.containerId(), 7, 1, 5_000, new Object[] {3}));
+        p.send(us.callFrame(provider.containerId(), 7, RawPeer.firstUserServiceId(server), 5_000,
+            new Object[] {3}));
         long deadline = System.nanoTime() + Duration.ofSeconds(5).toNanos();
         byte[] frame;
         do { // skip the provider's LINKS, TABLE, PING...

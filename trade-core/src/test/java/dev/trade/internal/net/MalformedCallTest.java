@@ -31,7 +31,7 @@ class MalformedCallTest {
     try (TRADEContainer server = TRADEContainer.builder().name("server")
         .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
         .property("CREDENTIALS", "secret").build()) {
-      server.registerAllServices(new Echo()); // the container's first service: id 1
+      server.registerAllServices(new Echo()); // the container's first service
       String[] address = server.getServerAddresses().get(0).split("@");
       UUID me = UUID.randomUUID();
       try (Socket s = new Socket()) {
@@ -44,7 +44,7 @@ class MalformedCallTest {
         ByteSink call = Frames.start(Wire.CALL, 64);
         Frames.writeRouting(call, me, peer.containerId(), Wire.MAX_HOPS);
         call.writeLong(7); // request id
-        call.writeLong(1); // service id
+        call.writeLong(RawPeer.firstUserServiceId(server)); // service id
         call.writeInt(1000);
         call.writeVarUInt(1);
         call.writeByte(0x7f); // not a value tag

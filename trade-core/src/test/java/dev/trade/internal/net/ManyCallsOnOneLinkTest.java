@@ -51,7 +51,7 @@ class ManyCallsOnOneLinkTest {
         // The caller sends nothing once its calls are out: on a slow machine the provider must
         // not find it silent before the last of them entered the gate.
         .property("FAILURETIMEOUT", "60000").build()) {
-      provider.registerAllServices(gate); // the container's first service: id 1
+      provider.registerAllServices(gate); // the container's first service
       String[] at = provider.getServerAddresses().get(0).split("@");
       try (RawPeer caller = RawPeer.connect(new InetSocketAddress(at[0], Integer.parseInt(at[1])))) {
         UUID providerId = caller.handshake("caller").containerId();
@@ -61,7 +61,7 @@ class ManyCallsOnOneLinkTest {
           ByteSink call = Frames.start(Wire.CALL, 64);
           Frames.writeRouting(call, caller.id, providerId, Wire.MAX_HOPS);
           call.writeLong(id); // request id
-          call.writeLong(1); // service id
+          call.writeLong(RawPeer.firstUserServiceId(provider)); // service id
           call.writeInt(60_000);
           call.writeVarUInt(0);
           frames.write(Frames.finish(call));

@@ -1,6 +1,7 @@
 package dev.trade.internal.net;
 
 import dev.trade.TRADEContainer;
+import dev.trade.TRADEServiceConstraints;
 import dev.trade.internal.net.link.Handshake;
 import dev.trade.internal.net.link.Wire;
 import java.io.DataInputStream;
@@ -32,6 +33,15 @@ final class RawPeer implements AutoCloseable {
     this.id = id;
     this.in = socket.getInputStream();
     this.out = socket.getOutputStream();
+  }
+
+  /**
+   * The id of the first service a test registers in {@code c}: the container's own system
+   * services (group trade.system) were registered before it, at start, and took the first ids.
+   */
+  static long firstUserServiceId(TRADEContainer c) {
+    return 1 + c.getAvailableServices(new TRADEServiceConstraints().inGroups("trade.system")).stream()
+        .filter(s -> s.getContainerId().equals(c.getId())).count();
   }
 
   /** Connects to the first address {@code container} listens on. */

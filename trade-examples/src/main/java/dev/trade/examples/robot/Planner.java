@@ -28,24 +28,31 @@ import java.util.concurrent.TimeUnit;
  *   <li>waits until an arm ({@code moveTo}, {@code openGripper}, {@code closeGripper}), a camera
  *       ({@code checkFor}), a head ({@code pan}, {@code tilt}) and a battery ({@code level}) have
  *       joined its groups;
+ *   <li>asks for the battery's {@code level()} with a {@code once} notification (a call that does
+ *       not block the planner; the result arrives at {@link #batteryReport}) and watches the
+ *       battery with a {@code when} notification: {@code isLow()}, asked every
+ *       {@value #BATTERY_PERIOD_MS} ms in the battery's own container, calls {@link #batteryLow}
+ *       the first time it is true;
  *   <li>picks up the cup the camera sees;
  *   <li>says {@code waiting for navigation to join} and waits for a {@code goTo} service, then
  *       drives to the kitchen;
  *   <li>says {@code watching for people} and keeps asking the camera, through the handle it got in
  *       step 1, until that handle fails with {@link TRADEServiceUnavailableException} (the camera's
  *       process was killed) and the camera's {@code left} notification has arrived;
- *   <li>carries on with what is left: puts the cup down without looking, and says
- *       {@code scenario complete}.
+ *   <li>carries on with what is left: puts the cup down without looking, cancels the battery watch
+ *       if the battery never ran low, and says {@code scenario complete}.
  * </ol>
  *
  * Every wait has a deadline; a missed one ends the scenario with a line saying what was missing.
  *
- * <p>Its callbacks are services, as TRADE requires, but the planner is not registered: nobody else
- * needs to call it. Safe for concurrent use (callbacks arrive on the container's delivery thread).
+ * <p>Its callbacks are services, as TRADE requires: its container registers it (in no group) for
+ * its notifications and deregisters it when the last one is cancelled. Safe for concurrent use
+ * (callbacks arrive on the container's delivery threads).
  */
 public final class Planner {
   private static final Duration WAIT = Duration.ofSeconds(20);
   private static final long WATCH_PERIOD_MS = 100;
+  private static final long BATTERY_PERIOD_MS = 100;
   private static final Pose CARRY = new Pose(0.10, 0.00, 0.40);
   private static final Pose COUNTER = new Pose(0.45, 0.30, 0.05);
 
@@ -55,6 +62,7 @@ public final class Planner {
   // Signalled on every joined and left, so that waits re-check the system at once.
   private final Object changes = new Object();
   private final Set<TRADEServiceInfo> departed = ConcurrentHashMap.newKeySet();
+  private volatile boolean batteryLow;
 
   /**
    * A planner that uses the services of {@code groups} (a service must be in all of them).
@@ -84,6 +92,19 @@ public final class Planner {
     departed.add(service);
     out.println("left: " + service.serviceString + " @ " + service.getContainerName());
     signal();
+  }
+
+  /** The {@code once} callback: the battery's level, read without blocking the planner. */
+  @TRADEService
+  public void batteryReport(int percent) {
+    out.println("battery at " + percent + "% (a once notification's result)");
+  }
+
+  /** The {@code when} callback: the battery ran low. */
+  @TRADEService
+  public void batteryLow() {
+    batteryLow = true;
+    out.println("battery low: the when notification fired; time to go back to the dock");
   }
 
   private void signal() {
@@ -127,8 +148,14 @@ public final class Planner {
         + moveTo.getContainerName() + ", a head on " + pan.getContainerName()
         + " and a battery on " + level.getContainerName());
 
-    // 2. Fetch the cup.
-    out.println("battery at " + level.call(int.class) + "%");
+    // 2. Ask the battery without waiting for it, and watch it where it is.
+    trade.requestNotification(this, "once", null, List.of(level), "batteryReport");
+    TRADEServiceInfo isLow = await("a battery", need("isLow"));
+    trade.requestNotification(this, "when", BATTERY_PERIOD_MS, List.of(isLow), "batteryLow");
+    out.println("watching the battery: when isLow() (every " + BATTERY_PERIOD_MS + " ms, on "
+        + isLow.getContainerName() + ") then batteryLow()");
+
+    // 3. Fetch the cup.
     pan.call(double.class, -20.0);
     tilt.call(double.class, -35.0);
     Detection cup = checkFor.call(Detection.class, "cup");
@@ -142,17 +169,17 @@ public final class Planner {
     moveTo.call(Pose.class, CARRY);
     out.println("picked up the cup");
 
-    // 3. Navigation is not there yet; it is noticed when it joins.
+    // 4. Navigation is not there yet; it is noticed when it joins.
     out.println("waiting for navigation to join");
     TRADEServiceInfo goTo = await("navigation", need("goTo", String.class));
     out.println("navigation is on " + goTo.getContainerName() + "; driving to the kitchen");
     goTo.call(boolean.class, "kitchen");
 
-    // 4. Keep using the camera through the old handle until it fails.
+    // 5. Keep using the camera through the old handle until it fails.
     out.println("watching for people (checkFor every " + WATCH_PERIOD_MS + " ms)");
     watchUntilGone(checkFor);
 
-    // 5. Carry on with what is left.
+    // 6. Carry on with what is left.
     Set<String> left = new LinkedHashSet<>();
     for (TRADEServiceInfo s : trade.getAvailableServices(new TRADEServiceConstraints().inGroups(groups))) {
       left.add(s.getContainerName());
@@ -166,6 +193,10 @@ public final class Planner {
     moveTo.call(Pose.class, COUNTER);
     open.call(boolean.class, 20);
     out.println("cup delivered; battery at " + level.call(int.class) + "%");
+    if (!batteryLow) {
+      trade.cancelNotification(this, "when", null);
+      out.println("the battery never ran low: battery watch cancelled");
+    }
   }
 
   /**

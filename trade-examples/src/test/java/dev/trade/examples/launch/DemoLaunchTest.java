@@ -43,6 +43,8 @@ class DemoLaunchTest {
     // The planner finds arm and camera by group and signature, and uses them.
     t.await("planner", "found a camera on vision, an arm on arm, a head on head and a battery on"
         + " battery", deadline);
+    t.await("planner", "watching the battery: when isLow() (every 100 ms, on battery) then"
+        + " batteryLow()", deadline);
     t.await("planner", "the camera sees a cup at (0.40, 0.10, 0.02)", deadline);
     t.await("arm", "opening gripper at speed 40", deadline);
     t.await("planner", "picked up the cup", deadline);
@@ -62,6 +64,8 @@ class DemoLaunchTest {
         + " Service not available any longer"), t.toString());
     String rest = t.await("planner", "no camera left", deadline);
     assertFalse(rest.contains("vision"), rest);
+    t.await("planner", "the battery never ran low: battery watch cancelled", deadline);
+    assertTrue(t.contains("planner", "% (a once notification's result)"), t.toString());
     t.await("planner", "scenario complete", deadline);
 
     // The launch ends with the planner and stops the others.

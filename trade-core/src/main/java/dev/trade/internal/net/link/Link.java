@@ -77,6 +77,16 @@ public final class Link {
    */
   volatile boolean pinging;
 
+  /**
+   * A caller waits for {@code reply} over this link without reading it (an asynchronous call, which
+   * holds no thread): reading is not lent to callers until the reply is done, since nobody else
+   * would read it.
+   */
+  public void awaitedWithoutReading(CompletableFuture<?> reply) {
+    role.parking();
+    reply.whenComplete((r, e) -> role.unparked());
+  }
+
   public Link(Socket socket, Handshake.Peer peer, boolean initiatedHere, int maxFrame) throws IOException {
     this(socket, peer, initiatedHere, maxFrame, new ReadRole());
   }

@@ -25,8 +25,10 @@ import java.util.Map;
 import java.util.Set;
 import java.util.UUID;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionException;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutionException;
+import java.util.concurrent.Executor;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
@@ -105,29 +107,12 @@ public final class RemoteCalls {
   /** Calls a service of another container and waits for its reply until the deadline. */
   public Object call(ServiceDescriptor d, Object[] args, CallContext context, long deadlineNanos,
       ClassLoader loader, Set<String> declared) throws TRADEException {
-    UUID destination = containerIds.get(d.containerId());
-    if (destination == null) {
-      if (containerIds.size() >= MAX_IDS) {
-        containerIds.clear(); // ids of containers long gone; the live ones come back at once
-      }
-      destination = UUID.fromString(d.containerId());
-      containerIds.put(d.containerId(), destination);
-    }
-    Link link = router.nextHop(destination);
-    if (link == null) {
-      throw CallErrors.gone(d, "its container is not reachable");
-    }
+    UUID destination = destination(d);
+    Link link = nextHop(d, destination);
     long id = nextId.incrementAndGet();
     long sent = System.nanoTime();
     long remaining = deadlineNanos - sent;
-    byte[] frame = callFrame(destination, id, d.serviceId(),
-        (int) Math.min(Integer.MAX_VALUE, Math.max(1, TimeUnit.NANOSECONDS.toMillis(remaining))), args,
-        context);
-    if (!Frames.fits(frame, link.sendLimit)) {
-      // Each value fits its limit, but not the call as a whole; the peer would drop the link.
-      throw new TRADESerializationException("Cannot call " + d.signature() + ": its arguments need "
-          + (frame.length - 4) + " bytes, more than " + ReplySender.limitOf(link, maxFrame));
-    }
+    byte[] frame = fittingFrame(d, link, destination, id, remaining, args, context);
     if (!link.output.hasRoom()) {
       awaitRoom(link, d, deadlineNanos, remaining);
     }
@@ -166,6 +151,91 @@ public final class RemoteCalls {
       throw new TRADEException("Interrupted while waiting for " + d.signature());
     }
     return decodeReply(d, reply, loader, declared);
+  }
+
+  /**
+   * Calls a service of another container without waiting: the future completes with the decoded
+   * reply (decoded on {@code executor}, never on the link's thread), or fails when the deadline
+   * passes ({@link Deadlines}) or the link or container is lost. No thread waits meanwhile: the
+   * link's reading thread completes the reply, and reading is not lent to callers while the call is
+   * outstanding ({@link Link#awaitedWithoutReading}), since nobody else would read its reply. A call that
+   * finds the link congested fails at once instead of waiting for room.
+   */
+  public CompletableFuture<Object> callAsync(ServiceDescriptor d, Object[] args,
+      CallContext context, long deadlineNanos, ClassLoader loader, Set<String> declared,
+      Executor executor) {
+    try {
+      UUID destination = destination(d);
+      Link link = nextHop(d, destination);
+      long id = nextId.incrementAndGet();
+      long remaining = deadlineNanos - System.nanoTime();
+      byte[] frame = fittingFrame(d, link, destination, id, remaining, args, context);
+      if (!link.output.hasRoom()) {
+        throw new TRADEServiceUnavailableException(CallErrors.notNowText("the link to "
+            + link.peerName + " holds " + link.output.queuedBytes() + " bytes that it takes slower"
+            + " than they are sent, and an asynchronous call does not wait for room"));
+      }
+      Pending p = new Pending(new CompletableFuture<>(), destination, link.peerId, deadlineNanos, d,
+          remaining);
+      link.awaitedWithoutReading(p.reply);
+      pending.put(id, p);
+      deadlines.watch();
+      try {
+        link.send(frame);
+        if (link.isClosed()) {
+          throw new IOException("link closed");
+        }
+      } catch (IOException e) {
+        if (pending.remove(id) != null) {
+          p.reply.completeExceptionally(
+              CallErrors.gone(d, "the connection to its container was lost"));
+        }
+      }
+      return p.reply.thenApplyAsync(payload -> {
+        try {
+          return decodeReply(d, payload, loader, declared);
+        } catch (TRADEException e) {
+          throw new CompletionException(e);
+        }
+      }, executor);
+    } catch (TRADEException e) {
+      return CompletableFuture.failedFuture(e);
+    }
+  }
+
+  /** The id of {@code d}'s container. */
+  private UUID destination(ServiceDescriptor d) {
+    UUID destination = containerIds.get(d.containerId());
+    if (destination == null) {
+      if (containerIds.size() >= MAX_IDS) {
+        containerIds.clear(); // ids of containers long gone; the live ones come back at once
+      }
+      destination = UUID.fromString(d.containerId());
+      containerIds.put(d.containerId(), destination);
+    }
+    return destination;
+  }
+
+  private Link nextHop(ServiceDescriptor d, UUID destination) throws TRADEException {
+    Link link = router.nextHop(destination);
+    if (link == null) {
+      throw CallErrors.gone(d, "its container is not reachable");
+    }
+    return link;
+  }
+
+  /** The CALL frame, checked against what {@code link}'s peer accepts. */
+  private byte[] fittingFrame(ServiceDescriptor d, Link link, UUID destination, long id,
+      long remaining, Object[] args, CallContext context) throws TRADESerializationException {
+    byte[] frame = callFrame(destination, id, d.serviceId(),
+        (int) Math.min(Integer.MAX_VALUE, Math.max(1, TimeUnit.NANOSECONDS.toMillis(remaining))), args,
+        context);
+    if (!Frames.fits(frame, link.sendLimit)) {
+      // Each value fits its limit, but not the call as a whole; the peer would drop the link.
+      throw new TRADESerializationException("Cannot call " + d.signature() + ": its arguments need "
+          + (frame.length - 4) + " bytes, more than " + ReplySender.limitOf(link, maxFrame));
+    }
+    return frame;
   }
 
   /**

@@ -1,0 +1,310 @@
+package dev.trade.internal.notify;
+
+import dev.trade.TRADEBadArgumentsException;
+import dev.trade.TRADEException;
+import dev.trade.TRADEInvocationException;
+import dev.trade.TRADEService;
+import dev.trade.TRADEServiceInfo;
+import dev.trade.TRADEServiceUnavailableException;
+import dev.trade.TRADETimeoutException;
+import dev.trade.internal.call.ServiceCaller;
+import dev.trade.internal.codec.InfoBinding;
+import dev.trade.internal.registry.Entry;
+import dev.trade.internal.registry.LocalService;
+import dev.trade.internal.registry.Query;
+import dev.trade.internal.registry.Registry;
+import dev.trade.internal.registry.ServiceDescriptor;
+import dev.trade.internal.system.SystemGroup;
+import java.lang.reflect.Method;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Collections;
+import java.util.IdentityHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.Set;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.function.Function;
+
+/**
+ * The requester's side of notifications, behind the static API: it finds the notification
+ * service of the container where a notification runs (the one providing {@code services[0]},
+ * else this one) and calls it like any service; it never reaches around the call path.
+ *
+ * <p>The TRADE 1.1.1 forms name a listener object and its callback method: the callback is the
+ * listener's {@code @TRADEService} of that name, and a listener not registered yet is registered
+ * (in no group) for the purpose. This client remembers those requests, so that
+ * {@code cancel(listener, type, argument)} finds their ids, and deregisters a listener it
+ * registered once its last such request is cancelled here. Safe for concurrent use.
+ */
+public final class NotificationClient {
+  private static final Query SYSTEM = new Query(null, null, null, Set.of(SystemGroup.NAME), Set.of(),
+      false, null, null, Set.of(), List.of(), List.of());
+
+  /** How listeners are registered and deregistered (this container's user registration). */
+  public interface Registrar {
+    void register(Object listener) throws TRADEException;
+
+    /** Registers one of the middleware's own listeners, in the reserved group. */
+    void registerSystem(Object listener) throws TRADEException;
+
+    void deregister(Object listener) throws TRADEException;
+  }
+
+  /** A listener-form request made here, until cancelled here. */
+  private record Mine(Object listener, Kind kind, Object argument, String id) {}
+
+  private final Registry registry;
+  private final ServiceCaller caller;
+  private final InfoBinding infos;
+  private final Registrar registrar;
+  private final Function<Object, Query> queries;
+  private final String requester;
+  private final List<Mine> mine = new CopyOnWriteArrayList<>();
+  private final Set<Object> registeredHere = Collections.newSetFromMap(new IdentityHashMap<>());
+
+  /**
+   * @param queries turns a {@code TRADEServiceConstraints} into a query (null for anything else):
+   *     cancelling compares constraints by what they match
+   */
+  public NotificationClient(Registry registry, ServiceCaller caller, InfoBinding infos,
+      Registrar registrar, Function<Object, Query> queries, String requester) {
+    this.registry = registry;
+    this.caller = caller;
+    this.infos = infos;
+    this.registrar = registrar;
+    this.queries = queries;
+    this.requester = requester;
+  }
+
+  /**
+   * Requests a notification whose callback is any service; see docs/notifications.md.
+   *
+   * @return its id, for {@link #cancel(String)} from any container
+   */
+  public String request(String type, Object argument, List<TRADEServiceInfo> services,
+      TRADEServiceInfo callback) throws TRADEException {
+    Objects.requireNonNull(callback, "callback == null");
+    String where = services == null || services.isEmpty() ? registry.containerId()
+        : infos.describe(services.get(0)).containerId();
+    return callSystem(where, "requestNotification", String.class, type, argument,
+        services == null ? List.of() : new ArrayList<>(services), callback, requester);
+  }
+
+  /** The TRADE 1.1.1 form: the callback is {@code listener}'s service {@code callbackMethod}. */
+  public void request(Object listener, String type, Object argument, List<TRADEServiceInfo> services,
+      String callbackMethod) throws TRADEException {
+    Kind kind = Kind.parse(type);
+    ServiceDescriptor service = services == null || services.isEmpty() ? null
+        : infos.describe(services.get(0));
+    boolean registered = ensureRegistered(listener, false);
+    try {
+      ServiceDescriptor cb = callbackOf(listener, callbackMethod, kind, service);
+      String id = request(type, argument, services, (TRADEServiceInfo) infos.bind(cb));
+      mine.add(new Mine(listener, kind, argument, id));
+    } catch (TRADEException | RuntimeException e) {
+      if (registered) {
+        releaseIfUnused(listener);
+      }
+      throw e;
+    }
+  }
+
+  /**
+   * Calls back now for every service matching, then for each that joins.
+   *
+   * @return the services matching now, in preference order
+   */
+  public List<TRADEServiceInfo> requestNowOrWhenJoined(Object listener, Object constraints,
+      String callbackMethod) throws TRADEException {
+    boolean registered = ensureRegistered(listener, listener instanceof Waiter);
+    try {
+      ServiceDescriptor cb = callbackOf(listener, callbackMethod, Kind.JOINED, null);
+      Map<?, ?> r = callSystem(registry.containerId(), "requestNotificationNowOrWhenJoined", Map.class,
+          constraints, infos.bind(cb), requester);
+      mine.add(new Mine(listener, Kind.JOINED, constraints, (String) r.get("id")));
+      List<TRADEServiceInfo> matches = new ArrayList<>();
+      for (Object m : (List<?>) r.get("matches")) {
+        matches.add((TRADEServiceInfo) m);
+      }
+      return matches;
+    } catch (TRADEException | RuntimeException e) {
+      if (registered) {
+        releaseIfUnused(listener);
+      }
+      throw e;
+    }
+  }
+
+  /**
+   * Cancels the listener's notifications of {@code type} requested here whose argument equals
+   * {@code argument}, or all of that type when {@code argument} is null.
+   *
+   * @return how many were cancelled
+   */
+  public int cancel(Object listener, String type, Object argument) throws TRADEException {
+    Kind kind = Kind.parse(type);
+    int n = 0;
+    for (Mine m : mine) {
+      if (m.listener == listener && m.kind == kind
+          && (argument == null || sameArgument(m.argument, argument))
+          && mine.remove(m)) {
+        n++;
+        cancel(m.id);
+      }
+    }
+    releaseIfUnused(listener);
+    return n;
+  }
+
+  /**
+   * Cancels the notification {@code id}, wherever it runs.
+   *
+   * @return whether it was live
+   * @throws TRADEBadArgumentsException if {@code id} is not a notification id
+   * @throws TRADEServiceUnavailableException if its container is not known here (any more)
+   */
+  public boolean cancel(String id) throws TRADEException {
+    int at = id == null ? -1 : id.lastIndexOf(':');
+    if (at <= 0) {
+      throw new TRADEBadArgumentsException("Not a notification id: '" + id + "' (ids look like"
+          + " <container id>:<number>)");
+    }
+    return callSystem(id.substring(0, at), "cancelNotification", Boolean.class, id);
+  }
+
+  /**
+   * The preferred service matching {@code constraints}, now or as soon as one joins: a joined
+   * notification, no polling.
+   *
+   * @throws TRADETimeoutException if none matched within {@code timeout}
+   */
+  public TRADEServiceInfo waitFor(Object constraints, Duration timeout) throws TRADEException {
+    Waiter w = new Waiter();
+    List<TRADEServiceInfo> now = requestNowOrWhenJoined(w, constraints, "joined");
+    try {
+      if (!now.isEmpty()) {
+        return now.get(0);
+      }
+      return w.first.get(Math.max(0, timeout.toNanos()), TimeUnit.NANOSECONDS);
+    } catch (TimeoutException e) {
+      throw new TRADETimeoutException("No service matching " + constraints + " within "
+          + timeout.toMillis() + " ms");
+    } catch (ExecutionException e) {
+      throw new IllegalStateException(e.getCause());
+    } catch (InterruptedException e) {
+      Thread.currentThread().interrupt();
+      throw new TRADEException("Interrupted while waiting for a service matching " + constraints);
+    } finally {
+      cancel(w, "joined", null);
+    }
+  }
+
+  /** The listener of {@link #waitFor}: a service, as every callback, in the reserved group. */
+  public static final class Waiter {
+    final CompletableFuture<TRADEServiceInfo> first = new CompletableFuture<>();
+
+    @TRADEService
+    public void joined(TRADEServiceInfo info) {
+      first.complete(info);
+    }
+  }
+
+  private boolean sameArgument(Object a, Object b) {
+    Query qa = a == null ? null : queries.apply(a);
+    Query qb = queries.apply(b);
+    return qa != null && qb != null ? qa.equals(qb)
+        : Arrays.deepEquals(new Object[] {a}, new Object[] {b});
+  }
+
+  /** Calls system service {@code name} of container {@code containerId}. */
+  private <T> T callSystem(String containerId, String name, Class<T> returnType, Object... args)
+      throws TRADEException {
+    ServiceDescriptor d = null;
+    for (Entry e : registry.find(name, SYSTEM)) {
+      if (e.descriptor().containerId().equals(containerId)) {
+        d = e.descriptor();
+        break;
+      }
+    }
+    if (d == null) {
+      throw new TRADEServiceUnavailableException("Service not available: container " + containerId
+          + " is not known here, or provides no " + name + " in group " + SystemGroup.NAME);
+    }
+    try {
+      return caller.call(d, returnType, args, 0);
+    } catch (TRADEInvocationException e) {
+      // The request was refused in the container it was sent to: its own typed error is the answer.
+      if (e.getCause() instanceof TRADEException) {
+        throw (TRADEException) e.getCause();
+      }
+      throw e;
+    }
+  }
+
+  /** Registers {@code listener} if it is not; returns whether this call registered it. */
+  private boolean ensureRegistered(Object listener, boolean system) throws TRADEException {
+    Objects.requireNonNull(listener, "listener == null");
+    synchronized (registeredHere) {
+      if (registry.servicesOf(listener) != null) {
+        return false;
+      }
+      if (system) {
+        registrar.registerSystem(listener);
+      } else {
+        registrar.register(listener);
+      }
+      registeredHere.add(listener);
+      return true;
+    }
+  }
+
+  private void releaseIfUnused(Object listener) throws TRADEException {
+    synchronized (registeredHere) {
+      for (Mine m : mine) {
+        if (m.listener == listener) {
+          return;
+        }
+      }
+      if (registeredHere.remove(listener) && registry.servicesOf(listener) != null) {
+        registrar.deregister(listener);
+      }
+    }
+  }
+
+  /** The listener's registered service {@code name} that can take what {@code kind} delivers. */
+  private ServiceDescriptor callbackOf(Object listener, String name, Kind kind,
+      ServiceDescriptor service) throws TRADEBadArgumentsException {
+    if (name == null) {
+      throw new TRADEBadArgumentsException("A notification needs a callback method name");
+    }
+    List<LocalService> services = registry.servicesOf(listener);
+    TRADEBadArgumentsException first = null;
+    for (LocalService s : services == null ? List.<LocalService>of() : services) {
+      if (s.descriptor().name().equals(name)) {
+        try {
+          Shape.of(kind, service, s.descriptor());
+          return s.descriptor();
+        } catch (TRADEBadArgumentsException e) {
+          first = first == null ? e : first;
+        }
+      }
+    }
+    if (first != null) {
+      throw first;
+    }
+    boolean exists = false;
+    for (Method m : listener.getClass().getMethods()) {
+      exists |= m.getName().equals(name);
+    }
+    throw new TRADEBadArgumentsException("Callback " + listener.getClass().getName() + "." + name
+        + " not usable: " + (exists ? "it must carry @" + TRADEService.class.getSimpleName()
+            + " (callbacks are services)" : "there is no public method of that name"));
+  }
+}

@@ -1,0 +1,105 @@
+package dev.trade.internal.notify;
+
+import dev.trade.TRADEException;
+import dev.trade.TRADEService;
+import dev.trade.TRADEServiceInfo;
+import dev.trade.internal.codec.InfoBinding;
+import dev.trade.internal.registry.ServiceDescriptor;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+
+/**
+ * The system service of notifications, one per container in the reserved group: every container
+ * (and any client that can call services) requests, cancels and lists notifications through it,
+ * locally or remotely. Its methods, their parameter and return types, are specified in
+ * docs/notifications.md so that other implementations can provide and call them.
+ *
+ * <p>Public only because services must be; the module does not export it. Safe for concurrent use.
+ */
+public final class NotificationService {
+  private final Notifications engine;
+  private final InfoBinding infos;
+
+  public NotificationService(Notifications engine, InfoBinding infos) {
+    this.engine = Objects.requireNonNull(engine, "engine == null");
+    this.infos = Objects.requireNonNull(infos, "infos == null");
+  }
+
+  /**
+   * Starts a notification in this container.
+   *
+   * @param type one of joined, left, once, after, at, every, if, when
+   * @param argument the type's argument (docs/notifications.md)
+   * @param services {@code services[0]}: the service called or the condition (may be null or empty
+   *     for types that take none)
+   * @param callback the service called back
+   * @param requester who asks, for the list and the log (a container's name)
+   * @return the notification's id: this container's id, ':', a number
+   * @throws TRADEException a bad request ({@code TRADEBadArgumentsException}) or a callback or
+   *     service not known here ({@code TRADEServiceUnavailableException}); nothing started
+   */
+  @TRADEService
+  public String requestNotification(String type, Object argument, List<TRADEServiceInfo> services,
+      TRADEServiceInfo callback, String requester) throws TRADEException {
+    return engine.request(type, argument, describeAll(services), describe(callback), requester);
+  }
+
+  /**
+   * Starts a joined notification that also calls back at once for every service matching now.
+   *
+   * @return {@code id} (String) and {@code matches} (the services matching now, in preference order)
+   */
+  @TRADEService
+  public Map<String, Object> requestNotificationNowOrWhenJoined(Object constraints,
+      TRADEServiceInfo callback, String requester) throws TRADEException {
+    Map.Entry<String, List<ServiceDescriptor>> r =
+        engine.requestNowOrWhenJoined(constraints, describe(callback), requester);
+    List<Object> matches = new ArrayList<>();
+    for (ServiceDescriptor d : r.getValue()) {
+      matches.add(infos.bind(d));
+    }
+    Map<String, Object> result = new LinkedHashMap<>();
+    result.put("id", r.getKey());
+    result.put("matches", matches);
+    return result;
+  }
+
+  /**
+   * Cancels a notification of this container.
+   *
+   * @return whether it was live (false: unknown, or ended already)
+   */
+  @TRADEService
+  public boolean cancelNotification(String id) {
+    return engine.cancel(id);
+  }
+
+  /** The live notifications of this container: one map each, keys as in docs/notifications.md. */
+  @TRADEService
+  public List<Map<String, Object>> listNotifications() {
+    return engine.list();
+  }
+
+  /** The last notifications of this container that ended, newest first, each with its endReason. */
+  @TRADEService
+  public List<Map<String, Object>> endedNotifications() {
+    return engine.ended();
+  }
+
+  private ServiceDescriptor describe(TRADEServiceInfo info) {
+    return info == null ? null : infos.describe(info);
+  }
+
+  private List<ServiceDescriptor> describeAll(List<TRADEServiceInfo> services) {
+    List<ServiceDescriptor> result = new ArrayList<>();
+    if (services != null) {
+      for (TRADEServiceInfo s : services) {
+        result.add(describe(Objects.requireNonNull(s, "services contains null")));
+      }
+    }
+    return result;
+  }
+}

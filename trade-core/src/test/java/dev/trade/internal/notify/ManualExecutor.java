@@ -1,0 +1,33 @@
+package dev.trade.internal.notify;
+
+import java.util.ArrayDeque;
+import java.util.Deque;
+import java.util.concurrent.Executor;
+
+/** Holds tasks until the test runs them: a delivery "still running" is one not run yet. */
+final class ManualExecutor implements Executor {
+  private final Deque<Runnable> queue = new ArrayDeque<>();
+
+  @Override
+  public synchronized void execute(Runnable task) {
+    queue.add(task);
+  }
+
+  synchronized int queued() {
+    return queue.size();
+  }
+
+  /** Runs the queued tasks (and those they queue) in order. */
+  void runAll() {
+    while (true) {
+      Runnable r;
+      synchronized (this) {
+        r = queue.poll();
+      }
+      if (r == null) {
+        return;
+      }
+      r.run();
+    }
+  }
+}
