@@ -241,6 +241,8 @@ public final class TRADEContainer implements AutoCloseable {
    * caller names it): their annotations travel with their descriptions.
    *
    * @param annotation an annotation type, such as DIARC's {@code Action.class}
+   * @param constraints the constraints; null matches every service
+   * @return the matches, in preference order; maybe none
    * @throws IllegalArgumentException if {@code annotation} is not an annotation type
    */
   public Collection<TRADEServiceInfo> getAvailableServices(

@@ -29,15 +29,31 @@ import java.lang.annotation.Target;
 @Target(ElementType.METHOD)
 @Repeatable(TRADEEffectsContainer.class)
 public @interface TRADEEffect {
-  /** The effects, in the user's notation. */
+  /**
+   * The effects, in the user's notation.
+   *
+   * @return the effects
+   */
   String[] effect();
 
-  /** When the effects hold. */
+  /**
+   * When the effects hold.
+   *
+   * @return the kind of effect
+   */
   TRADEEffectType type();
 
-  /** What can be observed to check the effects; none by default. */
+  /**
+   * What can be observed to check the effects; none by default.
+   *
+   * @return the observables
+   */
   String[] observable() default {};
 
-  /** Other changes the call causes; none by default. */
+  /**
+   * Other changes the call causes; none by default.
+   *
+   * @return the side effects
+   */
   String[] sideEffect() default {};
 }

@@ -23,6 +23,8 @@ public enum TRADEEffectType {
    * The constant named {@code name}, ignoring case and surrounding blanks: {@code "success"} gives
    * {@link #SUCCESS}.
    *
+   * @param name a constant's name
+   * @return the constant
    * @throws IllegalArgumentException if {@code name} is null or names no constant; the message lists
    *     the accepted names
    */

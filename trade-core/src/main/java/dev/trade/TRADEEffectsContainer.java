@@ -16,6 +16,10 @@ import java.lang.annotation.Target;
 @Retention(RetentionPolicy.RUNTIME)
 @Target(ElementType.METHOD)
 public @interface TRADEEffectsContainer {
-  /** The effects, in declaration order. */
+  /**
+   * The effects, in declaration order.
+   *
+   * @return the effects
+   */
   TRADEEffect[] value();
 }

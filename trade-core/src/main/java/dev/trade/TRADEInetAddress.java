@@ -20,13 +20,16 @@ import java.util.Objects;
 public final class TRADEInetAddress implements Serializable {
   private static final long serialVersionUID = 1L;
 
+  /** The host name. */
   private final String name;
+  /** The IPv4 or IPv6 address: 4 or 16 bytes. */
   private final byte[] address;
 
   /**
    * The host {@code name} at {@code address}.
    *
    * @param name the host name; when null, the address's text is used as the name
+   * @param address the host's address
    * @throws NullPointerException if {@code address} is null
    */
   public TRADEInetAddress(String name, InetAddress address) {
@@ -38,6 +41,9 @@ public final class TRADEInetAddress implements Serializable {
   /**
    * The host of {@code address}, named by the name it already holds (no lookup is made: an address
    * created from a literal has its text as name).
+   *
+   * @param address the host's address
+   * @throws NullPointerException if {@code address} is null
    */
   public TRADEInetAddress(InetAddress address) {
     this(nameWithoutLookup(address), address);
@@ -50,7 +56,13 @@ public final class TRADEInetAddress implements Serializable {
     return slash > 0 ? text.substring(0, slash) : address.getHostAddress();
   }
 
-  /** A stream may hold anything: keep the invariants the constructors keep. */
+  /**
+   * A stream may hold anything: keep the invariants the constructors keep.
+   *
+   * @param in the stream
+   * @throws IOException if it cannot be read, or holds no valid host
+   * @throws ClassNotFoundException if it names a class not known here
+   */
   private void readObject(ObjectInputStream in) throws IOException, ClassNotFoundException {
     in.defaultReadObject();
     if (name == null || address == null || address.length != 4 && address.length != 16) {
@@ -59,17 +71,29 @@ public final class TRADEInetAddress implements Serializable {
     }
   }
 
-  /** The host name. */
+  /**
+   * The host name.
+   *
+   * @return the name
+   */
   public String getName() {
     return name;
   }
 
-  /** The IP address as text: {@code 192.168.1.7}, or the full form of an IPv6 address. */
+  /**
+   * The IP address as text: {@code 192.168.1.7}, or the full form of an IPv6 address.
+   *
+   * @return the address
+   */
   public String getAddress() {
     return toInetAddress().getHostAddress();
   }
 
-  /** This host as an {@link InetAddress} with this name and address; no name service is asked. */
+  /**
+   * This host as an {@link InetAddress} with this name and address; no name service is asked.
+   *
+   * @return the address
+   */
   public InetAddress toInetAddress() {
     try {
       return InetAddress.getByAddress(name, address);

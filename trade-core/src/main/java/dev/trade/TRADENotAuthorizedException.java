@@ -9,10 +9,21 @@ package dev.trade;
 public class TRADENotAuthorizedException extends TRADEException {
   private static final long serialVersionUID = 1L;
 
+  /**
+   * A refusal that says what was refused and what was missing (never a secret).
+   *
+   * @param message the refusal
+   */
   public TRADENotAuthorizedException(String message) {
     super(message);
   }
 
+  /**
+   * A refusal with its cause.
+   *
+   * @param message the refusal
+   * @param cause why
+   */
   public TRADENotAuthorizedException(String message, Throwable cause) {
     super(message, cause);
   }

@@ -161,7 +161,12 @@ public class TRADEServiceConstraints {
     return this;
   }
 
-  /** TRADE's name for {@link #host(String)}. */
+  /**
+   * TRADE's name for {@link #host(String)}.
+   *
+   * @param host the host's name, as its container announces it
+   * @return this object
+   */
   public TRADEServiceConstraints onHost(String host) {
     return host(host);
   }
@@ -169,6 +174,9 @@ public class TRADEServiceConstraints {
   /**
    * Only services of containers on none of these hosts (adds to earlier calls; null and blank names
    * are ignored).
+   *
+   * @param hosts the hosts' names
+   * @return this object
    */
   public TRADEServiceConstraints notOnHost(String... hosts) {
     addGroups(notOnHosts, hosts);
@@ -178,6 +186,8 @@ public class TRADEServiceConstraints {
   /**
    * Only services of containers on the same host as the container that performs the lookup (its
    * own services included). Replaces an earlier {@link #notOnLocalhost()}.
+   *
+   * @return this object
    */
   public TRADEServiceConstraints onLocalhost() {
     this.localhost = Boolean.TRUE;
@@ -187,6 +197,8 @@ public class TRADEServiceConstraints {
   /**
    * Only services of containers on another host than the container that performs the lookup.
    * Replaces an earlier {@link #onLocalhost()}.
+   *
+   * @return this object
    */
   public TRADEServiceConstraints notOnLocalhost() {
     this.localhost = Boolean.FALSE;

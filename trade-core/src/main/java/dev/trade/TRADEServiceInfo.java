@@ -124,6 +124,10 @@ public final class TRADEServiceInfo implements Serializable, Cloneable {
    * future fails with {@link TRADETimeoutException}. A remote call that finds its connection
    * congested fails at once with {@link TRADEServiceUnavailableException} rather than wait.
    *
+   * @param <T> the result's type
+   * @param returnType the result's class ({@code void.class} or {@code Void.class} for none)
+   * @param args the arguments, as for {@link #call(Class, Object...)}
+   * @return the future result
    * @throws NullPointerException if {@code returnType} is null
    */
   public <T> CompletableFuture<T> callAsync(Class<T> returnType, Object... args) {
@@ -190,6 +194,8 @@ public final class TRADEServiceInfo implements Serializable, Cloneable {
    * The annotations on the service method and the declarations it overrides, one per type, as an
    * unmodifiable list. For a service of another container: those whose annotation type this JVM
    * knows and does not refuse (see docs/protocol.md, "What the receiver enforces").
+   *
+   * @return the annotations; maybe none
    */
   public List<Annotation> getAnnotations() {
     return descriptor.annotations();
@@ -198,6 +204,8 @@ public final class TRADEServiceInfo implements Serializable, Cloneable {
   /**
    * The annotations of each parameter, one unmodifiable list per parameter (empty for a parameter
    * without any), gathered like {@link #getAnnotations()}.
+   *
+   * @return one list per parameter
    */
   public List<List<Annotation>> getParameterAnnotations() {
     return descriptor.parameterAnnotations();
