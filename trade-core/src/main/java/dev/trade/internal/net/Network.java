@@ -287,7 +287,7 @@ public final class Network implements AutoCloseable {
    */
   boolean onControl(Runnable task) {
     try {
-      control.execute(task);
+      control.execute(() -> guarded(task));
       return true;
     } catch (RejectedExecutionException e) {
       if (!closed) {
@@ -298,6 +298,19 @@ public final class Network implements AutoCloseable {
   }
 
   /** Runs {@code task} on the control thread after {@code delayNanos}; nothing once closed. */
+  /**
+   * Runs a control task so that a failure of one never stops the control thread's work: a frame's
+   * own task closes its link (see Replication#received); anything that escapes is a fault here,
+   * logged with its stack trace, and the next task runs as usual.
+   */
+  private void guarded(Runnable task) {
+    try {
+      task.run();
+    } catch (RuntimeException | StackOverflowError e) {
+      LOG.log(Level.ERROR, name + ": a control task failed; the container goes on", e);
+    }
+  }
+
   private void onControlAfter(Runnable task, long delayNanos) {
     if (delayNanos <= 0) {
       onControl(task);

@@ -85,7 +85,7 @@ class UnroutableTableTest {
         long version = in.readLong();
         if (owner.equals(far)) {
           return new Table(owner, version,
-              StateFrames.descriptors(tables.read(in, getClass().getClassLoader())));
+              StateFrames.descriptors(tables.read(in, getClass().getClassLoader()), owner));
         }
       }
     }

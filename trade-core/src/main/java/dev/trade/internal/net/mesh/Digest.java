@@ -26,7 +26,6 @@ import java.util.Map;
 public final class Digest {
   /** The version sent for a link state or table the sender does not have. */
   static final long NONE = -1;
-  private static final int MAX_TEXT = 1024;
   private static final int MAX_ENTRIES = 65_536;
 
   private Digest() {}
@@ -95,7 +94,7 @@ public final class Digest {
     }
     Map<String, long[]> result = new HashMap<>();
     for (int i = 0; i < n; i++) {
-      String owner = in.readText(MAX_TEXT);
+      String owner = StateFrames.containerId(in);
       result.put(owner, new long[] {in.readLong(), in.readLong()});
     }
     return result;

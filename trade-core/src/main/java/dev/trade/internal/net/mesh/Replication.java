@@ -31,7 +31,6 @@ import java.util.function.Consumer;
  * <p>Everything but {@link #nextHop} and {@link #localChanged} runs on the network's control thread.
  */
 public final class Replication {
-  private static final int MAX_TEXT = 1024;
   /** How long the link state of an unreachable container is kept (it may be reachable soon). */
   private static final long STATE_GRACE_NANOS = 60_000_000_000L;
   /** The least time between two floods of this container's own link state, but see linkDown. */
@@ -230,7 +229,7 @@ public final class Replication {
     try {
       switch (type) {
         case Wire.LINKS: {
-          String owner = in.readText(MAX_TEXT);
+          String owner = StateFrames.containerId(in);
           long version = in.readLong();
           if (topology.isStale(owner, version) || filter.superseded(type, owner, version)) {
             break; // a copy that came another way first (most frames of a flood), or outdated
@@ -241,7 +240,7 @@ public final class Replication {
           }
           Set<String> neighbours = new HashSet<>();
           for (int i = 0; i < n; i++) {
-            neighbours.add(in.readText(MAX_TEXT));
+            neighbours.add(StateFrames.containerId(in));
           }
           Topology.LinkState state = new Topology.LinkState(owner, version, neighbours);
           if (topology.apply(state)) {
@@ -251,12 +250,13 @@ public final class Replication {
           break;
         }
         case Wire.TABLE: {
-          String owner = in.readText(MAX_TEXT);
+          String owner = StateFrames.containerId(in);
           long version = in.readLong();
           if (tables.isStale(owner, version) || filter.superseded(type, owner, version)) {
             break; // not decoded
           }
-          List<ServiceDescriptor> services = StateFrames.descriptors(tableCodec.read(in, loader()));
+          List<ServiceDescriptor> services =
+              StateFrames.descriptors(tableCodec.read(in, loader()), owner);
           // Routes as computed last: a table whose owner is not routable yet is listed once it is.
           if (!tables.table(new Table(owner, version, services), routing.route(owner),
               System.nanoTime())) {
@@ -267,12 +267,13 @@ public final class Replication {
           break;
         }
         case Wire.DELTA: {
-          String owner = in.readText(MAX_TEXT);
+          String owner = StateFrames.containerId(in);
           long version = in.readLong();
           if (tables.isStale(owner, version)) {
             break;
           }
-          List<ServiceDescriptor> add = StateFrames.descriptors(tableCodec.read(in, loader()));
+          List<ServiceDescriptor> add =
+              StateFrames.descriptors(tableCodec.read(in, loader()), owner);
           List<Long> remove = StateFrames.ids(tableCodec.read(in, loader()));
           Registry.DeltaResult r = tables.delta(owner, version, add, remove, routing.route(owner));
           if (r == Registry.DeltaResult.APPLIED) {
@@ -284,7 +285,7 @@ public final class Replication {
           break;
         }
         case Wire.TABLE_REQUEST: {
-          String owner = in.readText(MAX_TEXT);
+          String owner = StateFrames.containerId(in);
           if (owner.equals(selfId)) {
             send(from, StateFrames.table(tableCodec, registry.localTable()));
           } else {

@@ -2,6 +2,8 @@ package dev.trade.internal.net.mesh;
 
 import dev.trade.TRADESerializationException;
 import dev.trade.internal.codec.ByteSink;
+import dev.trade.internal.codec.ByteSource;
+import dev.trade.internal.codec.MalformedValueException;
 import dev.trade.internal.codec.Codec;
 import dev.trade.internal.net.link.Frames;
 import dev.trade.internal.net.link.Wire;
@@ -16,6 +18,8 @@ import java.util.List;
  * from them. Stateless; safe for concurrent use as far as the codec passed in is.
  */
 public final class StateFrames {
+  /** Room for a container id's text when it is read: more is malformed at once. */
+  private static final int MAX_ID_TEXT = 64;
   private StateFrames() {}
 
   public static byte[] links(Topology.LinkState s) {
@@ -69,7 +73,13 @@ public final class StateFrames {
     }
   }
 
-  public static List<ServiceDescriptor> descriptors(Object value) throws IOException {
+  /**
+   * The services of {@code owner}'s table: a member speaks only for itself, so every service must
+   * name {@code owner} as its container (docs/protocol.md, TABLE).
+   *
+   * @throws IOException if the value is not a list of service infos, or one names another container
+   */
+  public static List<ServiceDescriptor> descriptors(Object value, String owner) throws IOException {
     List<ServiceDescriptor> result = new ArrayList<>();
     if (!(value instanceof List)) {
       throw new IOException("service table is not a list");
@@ -78,9 +88,44 @@ public final class StateFrames {
       if (!(o instanceof ServiceDescriptor)) {
         throw new IOException("service table holds a " + (o == null ? "null" : o.getClass().getName()));
       }
-      result.add((ServiceDescriptor) o);
+      ServiceDescriptor d = (ServiceDescriptor) o;
+      if (!d.containerId().equals(owner)) {
+        throw new IOException("the table of " + owner + " lists a service of " + d.containerId()
+            + " (" + d.signature() + ")");
+      }
+      result.add(d);
     }
     return result;
+  }
+
+  /**
+   * A container id: exactly a UUID's canonical text (36 characters, lowercase hexadecimal, hyphens
+   * at 8, 13, 18 and 23), as every container writes its own (docs/protocol.md, Container ids).
+   * Anything else is malformed: read on, it would stop routing (which parses ids) far from the
+   * frame that carried it.
+   */
+  public static String containerId(ByteSource in) throws MalformedValueException {
+    String id = in.readText(MAX_ID_TEXT);
+    if (!isContainerId(id)) {
+      throw new MalformedValueException("'" + (id.length() > 40 ? id.substring(0, 40) + "…" : id)
+          + "' is not a container id (a UUID in its canonical lowercase form)");
+    }
+    return id;
+  }
+
+  /** Whether {@code id} is exactly a UUID's canonical text. */
+  public static boolean isContainerId(String id) {
+    if (id.length() != 36) {
+      return false;
+    }
+    for (int i = 0; i < 36; i++) {
+      char c = id.charAt(i);
+      boolean hyphen = i == 8 || i == 13 || i == 18 || i == 23;
+      if (hyphen ? c != '-' : !(c >= '0' && c <= '9' || c >= 'a' && c <= 'f')) {
+        return false;
+      }
+    }
+    return true;
   }
 
   static List<Long> ids(Object value) throws IOException {
