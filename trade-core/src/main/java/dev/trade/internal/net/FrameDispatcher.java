@@ -47,8 +47,10 @@ final class FrameDispatcher implements LinkHandler {
     switch (type) {
       case Wire.CALL:
       case Wire.REPLY:
-        if (payload.length < Frames.ROUTING + 8) {
-          throw new IOException("short frame of type " + type);
+        if (payload.length < (type == Wire.CALL ? Frames.MIN_CALL : Frames.MIN_REPLY)) {
+          throw new IOException((type == Wire.CALL ? "CALL" : "REPLY") + " of " + payload.length
+              + " bytes, shorter than its fixed fields (" + (type == Wire.CALL ? Frames.MIN_CALL
+              : Frames.MIN_REPLY) + ")");
         }
         return type == Wire.CALL ? calls.onCall(link, payload) : calls.onReply(link, payload);
       case Wire.PING:

@@ -11,6 +11,7 @@ import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
 import dev.trade.internal.net.link.Connector;
 import dev.trade.internal.net.link.Handshake;
+import dev.trade.internal.net.link.Frames;
 import dev.trade.internal.net.link.Wire;
 import dev.trade.testing.Await;
 import java.io.IOException;
@@ -228,7 +229,13 @@ class HostileInputTest {
     expectLinkClosed(RawPeer.frame(6, 2, Wire.PING, new byte[4]));
     awaitLog("frame of protocol version 2 from intruder");
     expectLinkClosed(RawPeer.frame(Wire.CALL, new byte[10]));
-    awaitLog("short frame of type 30");
+    awaitLog("CALL of 10 bytes, shorter than its fixed fields (54)");
+    // One to pass on, long enough for its ids but not its timeout: was an index out of bounds.
+    byte[] shortCall = new byte[Frames.MIN_CALL - 1];
+    java.nio.ByteBuffer.wrap(shortCall).putLong(16, 7).putLong(24, 9); // to a container elsewhere
+    shortCall[32] = 5;
+    expectLinkClosed(RawPeer.frame(Wire.CALL, shortCall));
+    awaitLog("CALL of 53 bytes, shorter than its fixed fields (54)");
     // A replication frame is read on the control thread; the reason must still reach the log.
     expectLinkClosed(RawPeer.frame(Wire.LINKS, new byte[] {(byte) 0xff, (byte) 0xff, (byte) 0xff}));
     awaitLog("link to intruder closed: malformed replication frame");

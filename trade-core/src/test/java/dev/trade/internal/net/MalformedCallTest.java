@@ -20,9 +20,60 @@ import org.junit.jupiter.api.Test;
 /** An authenticated peer whose call carries bytes that are not a value loses its connection. */
 class MalformedCallTest {
   public static class Echo {
+    final java.util.concurrent.atomic.AtomicInteger calls =
+        new java.util.concurrent.atomic.AtomicInteger();
+
     @TRADEService
     public String echo(String s) {
+      calls.incrementAndGet();
       return s;
+    }
+  }
+
+  /**
+   * A CALL that arrives with no time left (a timeout of 0 or less, which no sender writes) is not
+   * run: it is answered at once with a timeout, and the link stays up.
+   */
+  @Test
+  void aCallWithNoTimeLeftIsAnsweredWithATimeoutAndNotRun() throws Exception {
+    try (TRADEContainer server = TRADEContainer.builder().name("server")
+        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
+        .property("CREDENTIALS", "secret").build()) {
+      Echo echo = new Echo();
+      server.registerAllServices(echo);
+      String[] address = server.getServerAddresses().get(0).split("@");
+      UUID me = UUID.randomUUID();
+      try (Socket s = new Socket()) {
+        s.connect(new InetSocketAddress(address[0], Integer.parseInt(address[1])), 2000);
+        s.setSoTimeout(20_000);
+        Handshake.Peer peer = new Handshake(new Handshake.Identity("diarc", me, "tester", "h",
+            List.of(), false, false, 0), "secret").run(s.getInputStream(), s.getOutputStream(), true);
+        DataInputStream in = new DataInputStream(s.getInputStream());
+        for (int timeout : new int[] {0, -5, Integer.MIN_VALUE}) {
+          ByteSink call = Frames.start(Wire.CALL, 64);
+          Frames.writeRouting(call, me, peer.containerId(), Wire.MAX_HOPS);
+          call.writeLong(7); // request id
+          call.writeLong(RawPeer.firstUserServiceId(server));
+          call.writeInt(timeout);
+          call.writeVarUInt(1);
+          call.writeByte(0x0A); // the tag of a STRING ...
+          call.writeVarUInt(0); // ... that is empty
+          s.getOutputStream().write(Frames.finish(call));
+          assertEquals(Wire.FAILED_TIMEOUT, replyStatus(in), "timeout " + timeout);
+        }
+        assertEquals(0, echo.calls.get(), "run with no time left");
+      }
+    }
+  }
+
+  /** The status of the next REPLY, skipping replication frames. */
+  private static int replyStatus(DataInputStream in) throws java.io.IOException {
+    while (true) {
+      byte[] body = new byte[in.readInt()];
+      in.readFully(body);
+      if (body[1] == Wire.REPLY) {
+        return body[2 + Frames.ROUTING + 8];
+      }
     }
   }
 

@@ -44,6 +44,14 @@ public final class Frames {
 
   /** Where a CALL frame (header included) holds its timeout, after routing and the two ids. */
   private static final int CALL_TIMEOUT = Wire.HEADER + ROUTING + 16;
+  /**
+   * The shortest CALL payload: routing, request id, service id, timeout and the argument count (a
+   * byte at least). A shorter one is malformed, whether it is to be served or passed on
+   * (docs/protocol.md, CALL).
+   */
+  public static final int MIN_CALL = ROUTING + 8 + 8 + 4 + 1;
+  /** The shortest REPLY payload: routing, request id, status. */
+  public static final int MIN_REPLY = ROUTING + 8 + 1;
 
   /** Whether a complete frame (header included) is a CALL. */
   public static boolean isCall(byte[] frame) {
@@ -84,6 +92,11 @@ public final class Frames {
     }
     INTS.set(callPayload, at, left - ms);
     return true;
+  }
+
+  /** The timeout, in ms, of a CALL payload (header not included) of {@link #MIN_CALL} bytes or more. */
+  public static int callTimeout(byte[] callPayload) {
+    return (int) INTS.get(callPayload, CALL_TIMEOUT - Wire.HEADER);
   }
 
   /** Whether a complete frame (header included) keeps within {@code limit} (MAXFRAMESIZE). */

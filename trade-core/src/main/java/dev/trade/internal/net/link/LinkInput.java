@@ -22,6 +22,8 @@ import java.util.concurrent.TimeUnit;
  */
 final class LinkInput extends BufferedInputStream {
   private static final int READ_CHUNK = 64 * 1024;
+  /** What a frame's payload is first read into: the whole of most frames. */
+  static final int FIRST_PAYLOAD = 64 * 1024;
 
   /** A frame read whole. */
   record Frame(int type, byte[] payload) {}
@@ -123,13 +125,19 @@ final class LinkInput extends BufferedInputStream {
 
   /**
    * Reads a frame's payload into a new array, running {@code arrived} whenever bytes arrive: a
-   * large frame on a slow link can take longer than FAILURETIMEOUT.
+   * large frame on a slow link can take longer than FAILURETIMEOUT. The array grows with the bytes
+   * that arrive, doubling, never ahead of them by more than it holds: a peer that claims a frame of
+   * MAXFRAMESIZE and sends a few bytes makes this allocate {@link #FIRST_PAYLOAD} bytes, not the
+   * claim (six links claiming 12 MiB each ran a 64 MiB container out of memory).
    */
   private byte[] readPayload(int size) throws IOException {
-    byte[] payload = new byte[size];
+    byte[] payload = new byte[Math.min(size, FIRST_PAYLOAD)];
     int done = 0;
     while (done < size) {
-      int n = read(payload, done, Math.min(READ_CHUNK, size - done));
+      if (done == payload.length) {
+        payload = Arrays.copyOf(payload, (int) Math.min(size, 2L * payload.length));
+      }
+      int n = read(payload, done, Math.min(READ_CHUNK, payload.length - done));
       if (n < 0) {
         throw new EOFException("connection closed within a frame");
       }

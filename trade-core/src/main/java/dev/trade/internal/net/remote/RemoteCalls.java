@@ -312,6 +312,13 @@ public final class RemoteCalls {
    * @return true if this thread still reads {@code from}
    */
   public boolean onCall(Link from, byte[] payload) {
+    int timeoutMs = Frames.callTimeout(payload);
+    if (timeoutMs <= 0) {
+      // Senders write at least 1 ms: none left means the caller has given up, or a broken peer.
+      replies.reply(from, payload, Wire.FAILED_TIMEOUT, "The call arrived at container " + self
+          + " with no time left (timeout " + timeoutMs + " ms); it was neither run nor passed on");
+      return true;
+    }
     UUID destination = Frames.destination(payload);
     if (!destination.equals(self)) {
       // Passing a frame on writes to another link, which can block (its peer slow or not
