@@ -61,6 +61,8 @@ public final class RemoteCalls {
    * (10, 20, 40, 80 and 160 ms: 310 ms in all) before it is passed back all the same.
    */
   static final int ROUTE_WAITS = 5;
+  /** Calls passed on, beyond which those whose replies are no longer awaited are forgotten. */
+  private static final int MAX_PASSED_ON = 4096;
 
   /** Finds the link a frame for a container leaves by. */
   public interface Router {
@@ -69,6 +71,15 @@ public final class RemoteCalls {
   }
 
   /** A call sent and not answered yet, until {@code deadline} (nanoTime). */
+  /** A call passed on: its caller and request id. */
+  private record Passed(UUID caller, long requestId) {}
+
+  /** Where a call passed on came from and went, and until when (nanoTime) its reply is awaited. */
+  private record PassedOn(Link in, Link out, long until) {}
+
+  /** How long after its timeout a passed-on call's reply is still passed back. */
+  private static final long REPLY_GRACE_NANOS = TimeUnit.SECONDS.toNanos(2);
+
   record Pending(CompletableFuture<byte[]> reply, UUID destination, UUID via, long deadline,
       ServiceDescriptor service, long timeoutNanos) {
     /** What the caller gets when the deadline passed. */
@@ -85,6 +96,13 @@ public final class RemoteCalls {
   private final int maxFrame;
   private final AtomicLong nextId = new AtomicLong();
   private final Map<Long, Pending> pending = new ConcurrentHashMap<>();
+  /**
+   * The calls this container passed on, by caller and request id, until their replies come back
+   * or their time is up: a REPLY is passed on only as the answer to one of them (see onReply).
+   */
+  private final Map<Passed, PassedOn> passedOn = new ConcurrentHashMap<>();
+  /** REPLY frames dropped because no call of theirs went out that way (see onReply). */
+  private final AtomicLong strayReplies = new AtomicLong();
   /** Parsed container ids of the services called (parsing one costs more than a lookup). */
   private final Map<String, UUID> containerIds = new ConcurrentHashMap<>();
   private final ReplyWait replyWait = new ReplyWait();
@@ -323,7 +341,7 @@ public final class RemoteCalls {
     if (!destination.equals(self)) {
       // Passing a frame on writes to another link, which can block (its peer slow or not
       // reading): like a call served here, the link it came over is read elsewhere meanwhile.
-      return from.serveHere(() -> forward(from, Wire.CALL, payload, destination, 0));
+      return from.serveHere(() -> forward(from, payload, destination, 0));
     }
     if (from.servedElsewhere() >= MAX_SERVED_PER_LINK) {
       replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, CallErrors.notNowText("container "
@@ -351,30 +369,69 @@ public final class RemoteCalls {
    *
    * @return true if this thread still reads {@code from}
    */
+  /**
+   * A REPLY is accepted only over the link its call went out on: a reply retraces its call's path
+   * (the provider answers over the link the call came in on, and each container that passed the
+   * call on passes the reply back over the link the call came from), so whatever arrives that way
+   * comes from the provider or from a container on the path that could not pass the call on. A
+   * member that is not on the call's path cannot answer for the provider, whatever request id it
+   * guesses, and a container never passes on a reply that names it as its source. Anything else is
+   * dropped and counted, not an error: the call's path may have broken meanwhile.
+   */
   public boolean onReply(Link from, byte[] payload) {
     UUID destination = Frames.destination(payload);
-    if (!destination.equals(self)) {
-      return from.serveHere(() -> forward(null, Wire.REPLY, payload, destination, 0)); // see onCall
-    }
     long id = Frames.requestId(payload);
-    Pending p = pending.remove(id);
-    if (p != null) {
-      p.reply.complete(payload);
+    UUID source = Frames.source(payload);
+    if (!destination.equals(self)) {
+      PassedOn route = passedOn.get(new Passed(destination, id));
+      if (route == null || route.out != from || source.equals(self)
+          || !passedOn.remove(new Passed(destination, id), route)) {
+        stray(from, payload);
+        return true;
+      }
+      return from.serveHere(() -> passBack(route, payload, destination));
     }
+    Pending p = pending.get(id);
+    if (p == null || !p.via.equals(from.peerId) || !pending.remove(id, p)) {
+      stray(from, payload);
+      return true;
+    }
+    p.reply.complete(payload);
     return true;
+  }
+
+  private void stray(Link from, byte[] payload) {
+    strayReplies.incrementAndGet();
+    LOG.log(Level.DEBUG, "dropped a reply from {0} for {1} (request {2}) over the link to {3}: no "
+        + "call of that id went that way", Frames.source(payload), Frames.destination(payload),
+        Frames.requestId(payload), from.peerName);
+  }
+
+  /** REPLY frames dropped because no call of theirs went out that way (for tests). */
+  long strayReplies() {
+    return strayReplies.get();
+  }
+
+  /** Passes a reply back over the link its call came from (while that link is open). */
+  private void passBack(PassedOn route, byte[] payload, UUID caller) {
+    if (Frames.hops(payload) <= 1) {
+      return;
+    }
+    if (!replies.passBack(route.in, Frames.forwarded(Wire.REPLY, payload))) {
+      LOG.log(Level.DEBUG, "reply to {0} dropped: the link its call came from closed", caller);
+    }
+  }
+
+  /** Forgets the calls passed on whose replies are no longer awaited at {@code now} (nanoTime). */
+  private void forgetPassed(long now) {
+    passedOn.values().removeIf(r -> now - r.until > 0);
   }
 
   /**
    * @param from the link a CALL came in on (for its failure reply); null for a REPLY
    * @param waits how many times the CALL waited for routes to settle already
    */
-  private void forward(Link from, int type, byte[] payload, UUID destination, int waits) {
-    if (type == Wire.REPLY) {
-      if (Frames.hops(payload) > 1) {
-        replies.deliver(destination, Frames.forwarded(type, payload), 0);
-      }
-      return;
-    }
+  private void forward(Link from, byte[] payload, UUID destination, int waits) {
     Link next = router.nextHop(destination);
     if (next == from && waits < ROUTE_WAITS && Frames.spendCallTime(payload, 10 << waits)) {
       // The neighbour that passed the call here has this container on its shortest path to the
@@ -383,7 +440,7 @@ public final class RemoteCalls {
       // out; it waits for routes to settle instead, as a reply does (ReplySender#deliver), and the
       // wait counts against its timeout.
       try {
-        timer.schedule(() -> forward(from, type, payload, destination, waits + 1), 10 << waits,
+        timer.schedule(() -> forward(from, payload, destination, waits + 1), 10 << waits,
             TimeUnit.MILLISECONDS);
         return;
       } catch (RejectedExecutionException closing) {
@@ -392,13 +449,11 @@ public final class RemoteCalls {
     }
     if (next == null || Frames.hops(payload) <= 1) {
       LOG.log(Level.DEBUG, "dropping frame for unreachable {0}", destination);
-      if (type == Wire.CALL) {
-        replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, CallErrors.goneText("container "
-            + destination + " is not reachable from " + self));
-      }
+      replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, CallErrors.goneText("container "
+          + destination + " is not reachable from " + self));
       return;
     }
-    byte[] frame = Frames.forwarded(type, payload);
+    byte[] frame = Frames.forwarded(Wire.CALL, payload);
     if (!next.output.hasRoom()) {
       // A reading thread must not wait for room: it would stop reading the link the call came on.
       replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, CallErrors.notNowText("the link from "
@@ -412,13 +467,21 @@ public final class RemoteCalls {
           + ReplySender.limitOf(next, maxFrame));
       return;
     }
+    long now = System.nanoTime();
+    Passed key = new Passed(Frames.source(payload), Frames.requestId(payload));
+    PassedOn route = new PassedOn(from, next,
+        now + TimeUnit.MILLISECONDS.toNanos(Math.max(0, Frames.callTimeout(payload)))
+            + REPLY_GRACE_NANOS);
+    if (passedOn.size() >= MAX_PASSED_ON) {
+      forgetPassed(now);
+    }
+    passedOn.put(key, route);
     try {
       next.passOn(frame);
     } catch (IOException e) {
-      if (type == Wire.CALL) {
-        replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, CallErrors.goneText("the route to container "
-            + destination + " was lost"));
-      }
+      passedOn.remove(key, route);
+      replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, CallErrors.goneText("the route to container "
+          + destination + " was lost"));
     }
   }
 

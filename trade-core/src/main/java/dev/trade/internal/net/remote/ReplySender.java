@@ -110,6 +110,15 @@ public final class ReplySender {
   }
 
   /**
+   * Passes a reply that came back from a call passed on back over the link the call came from
+   * (see RemoteCalls#onReply); false if that link has closed. A reply too large for that link is
+   * replaced by one that says so, as any reply sent here is.
+   */
+  boolean passBack(Link in, byte[] frame) {
+    return sent(in, frame);
+  }
+
+  /**
    * Sends over {@code link} if it is there and open; false if not or if the write failed. A frame
    * too large for the link is replaced by one that says so (see {@link #tooLarge}).
    */

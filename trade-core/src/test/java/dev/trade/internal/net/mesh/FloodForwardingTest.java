@@ -98,8 +98,10 @@ class FloodForwardingTest {
     link("b", b);
     InputStream atC = link("c", c);
     String owner = UUID.randomUUID().toString();
-    byte[] first = StateFrames.links(new Topology.LinkState(owner, 1, Set.of("x")));
-    byte[] second = StateFrames.links(new Topology.LinkState(owner, 2, Set.of("x", "y")));
+    String x = UUID.randomUUID().toString();
+    String y = UUID.randomUUID().toString();
+    byte[] first = StateFrames.links(new Topology.LinkState(owner, 1, Set.of(x)));
+    byte[] second = StateFrames.links(new Topology.LinkState(owner, 2, Set.of(x, y)));
     byte[] one = Arrays.copyOfRange(first, Wire.HEADER, first.length);
     byte[] two = Arrays.copyOfRange(second, Wire.HEADER, second.length);
     // Both versions queue for the control thread (a busy one), one after the other.
