@@ -10,6 +10,7 @@ import dev.trade.TRADEException;
 import dev.trade.TRADESerializationException;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
+import dev.trade.testing.Await;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Collection;
@@ -19,7 +20,6 @@ import java.util.Set;
 import org.example.jvm.diarc.action.Action;
 import org.example.jvm.diarc.language.Utterance;
 import org.example.jvm.diarc.symbols.Symbol;
-import dev.trade.testing.Await;
 import org.junit.jupiter.api.Test;
 
 /**

@@ -11,13 +11,13 @@ import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceNotFoundException;
 import dev.trade.UncheckedTRADEException;
+import dev.trade.testing.Await;
 import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
-import dev.trade.testing.Await;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 
