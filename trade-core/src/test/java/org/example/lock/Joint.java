@@ -2,14 +2,13 @@ package org.example.lock;
 
 import dev.trade.TRADEService;
 import java.util.concurrent.atomic.AtomicInteger;
-import java.util.concurrent.atomic.AtomicReference;
 
 /**
  * An effector to lock: it counts the moments when two callers were inside it at once, which a lock
  * held by one of them must make impossible.
  */
 public final class Joint {
-  private final AtomicReference<String> inside = new AtomicReference<>();
+  private String inside; // Guarded by this.
   final AtomicInteger overlaps = new AtomicInteger();
   final AtomicInteger moves = new AtomicInteger();
 
@@ -20,16 +19,18 @@ public final class Joint {
   }
 
   @TRADEService
-  public void enter(String who) {
-    if (!inside.compareAndSet(null, who)) {
+  public synchronized void enter(String who) {
+    if (inside != null) {
       overlaps.incrementAndGet();
     }
+    inside = who;
   }
 
   @TRADEService
-  public void leave(String who) {
-    if (!inside.compareAndSet(who, null)) {
+  public synchronized void leave(String who) {
+    if (!who.equals(inside)) {
       overlaps.incrementAndGet();
     }
+    inside = null;
   }
 }
