@@ -4,6 +4,7 @@ import java.time.Duration;
 import java.util.Collection;
 import java.util.List;
 import java.util.Objects;
+import java.util.UUID;
 
 /**
  * The JVM's default {@link TRADEContainer}, as static methods: the API TRADE users write against.
@@ -315,6 +316,66 @@ public final class TRADE {
   public static TRADEServiceInfo waitForService(TRADEServiceConstraints constraints,
       Duration timeout) throws TRADEException {
     return getDefaultContainer().waitForService(constraints, timeout);
+  }
+
+  /**
+   * Locks every service registered in all of {@code groups}, at once or not at all: see
+   * {@link TRADEContainer#lockServicesContainAll(Collection)}.
+   *
+   * @param groups the groups every service to lock is in; not empty
+   * @return the lock's id, or null when any of those services is held by another lock
+   * @throws UncheckedTRADEException for bad input (no groups, no matching service) or an
+   *     unreachable container; nothing is locked then
+   */
+  public static UUID lockServicesContainAll(Collection<String> groups) {
+    return getDefaultContainer().lockServicesContainAll(groups);
+  }
+
+  /**
+   * Locks every service registered in at least one of {@code groups}, at once or not at all: see
+   * {@link TRADEContainer#lockServicesContainOne(Collection)}.
+   *
+   * @param groups the groups; a service in any of them is locked; not empty
+   * @return the lock's id, or null when any of those services is held by another lock
+   * @throws UncheckedTRADEException as {@link #lockServicesContainAll(Collection)}
+   */
+  public static UUID lockServicesContainOne(Collection<String> groups) {
+    return getDefaultContainer().lockServicesContainOne(groups);
+  }
+
+  /**
+   * Locks {@code services}, waiting up to {@code maxWait}: see
+   * {@link TRADEContainer#lock(Collection, Duration)}.
+   *
+   * @param services the services to lock; not empty
+   * @param maxWait the longest to wait for them; zero to take them only if free now
+   * @return the lock, to release with {@link TRADELock#close()}
+   * @throws TRADEException as {@link TRADEContainer#lock(Collection, Duration)}
+   */
+  public static TRADELock lock(Collection<TRADEServiceInfo> services, Duration maxWait)
+      throws TRADEException {
+    return getDefaultContainer().lock(services, maxWait);
+  }
+
+  /**
+   * Releases a lock: see {@link TRADEContainer#releaseLock(UUID)}.
+   *
+   * @param lock the lock's id
+   * @throws TRADEException {@link TRADEBadArgumentsException} if no lock of that id is held,
+   *     {@link TRADENotAuthorizedException} if another container owns it
+   */
+  public static void releaseLock(UUID lock) throws TRADEException {
+    getDefaultContainer().releaseLock(lock);
+  }
+
+  /**
+   * Every lock's claims on services, from every container: see {@link TRADEContainer#getLocks()}.
+   *
+   * @return the claims; maybe none
+   * @throws TRADEException as {@link TRADEContainer#getLocks()}
+   */
+  public static List<TRADELockInfo> getLocks() throws TRADEException {
+    return getDefaultContainer().getLocks();
   }
 
   /**

@@ -12,14 +12,17 @@ import dev.trade.internal.registry.Suggestions;
 import java.lang.annotation.Annotation;
 import java.net.InetSocketAddress;
 import java.time.Duration;
+import java.time.Instant;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collection;
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Objects;
 import java.util.Properties;
 import java.util.Set;
+import java.util.UUID;
 
 /**
  * A TRADE container: it holds registered services, knows the services of every container of its
@@ -391,6 +394,147 @@ public final class TRADEContainer implements AutoCloseable {
     Objects.requireNonNull(timeout, "timeout == null");
     checkOpen();
     return core.notifications().waitFor(constraints, timeout);
+  }
+
+  /**
+   * Locks every service (of any container) registered in all of {@code groups}, all or none, at
+   * once or not at all: TRADE 1.1.1's form. Use the id with
+   * {@link TRADEServiceInfo#call(UUID, Class, Object...)} and {@link #releaseLock(UUID)}.
+   *
+   * @param groups the groups every service to lock is in; not empty
+   * @return the lock's id, or null when any of those services is held by another lock (or awaited
+   *     by an earlier request)
+   * @throws UncheckedTRADEException wrapping {@link TRADEBadArgumentsException} when
+   *     {@code groups} is empty or no service matches, or another {@link TRADEException} when a
+   *     container cannot be reached; nothing is locked then
+   */
+  public UUID lockServicesContainAll(Collection<String> groups) {
+    TRADEServiceConstraints c = new TRADEServiceConstraints().inGroups(groupArray(groups));
+    return lockAtOnce(getAvailableServices(c), groups);
+  }
+
+  /**
+   * Locks every service (of any container) registered in at least one of {@code groups}, all or
+   * none, at once or not at all: TRADE 1.1.1's form; see {@link #lockServicesContainAll}.
+   *
+   * @param groups the groups; a service in any of them is locked; not empty
+   * @return the lock's id, or null when any of those services is held by another lock (or awaited
+   *     by an earlier request)
+   * @throws UncheckedTRADEException as {@link #lockServicesContainAll}
+   */
+  public UUID lockServicesContainOne(Collection<String> groups) {
+    Set<TRADEServiceInfo> services = new LinkedHashSet<>();
+    for (String g : groupArray(groups)) {
+      services.addAll(getAvailableServices(new TRADEServiceConstraints().inGroups(g)));
+    }
+    return lockAtOnce(services, groups);
+  }
+
+  private UUID lockAtOnce(Collection<TRADEServiceInfo> services, Collection<String> groups) {
+    try {
+      if (services.isEmpty()) {
+        throw new TRADEBadArgumentsException("No service is in the groups " + groups
+            + "; nothing to lock");
+      }
+      return lock(services, Duration.ZERO).getId();
+    } catch (TRADELockedException e) {
+      return null;
+    } catch (TRADEException e) {
+      throw new UncheckedTRADEException(e);
+    }
+  }
+
+  private static String[] groupArray(Collection<String> groups) {
+    Set<String> g = normalize(groups);
+    if (g.isEmpty()) {
+      throw new UncheckedTRADEException(new TRADEBadArgumentsException("A lock needs at least one"
+          + " group: groups is " + (groups == null ? "null" : "empty")));
+    }
+    return g.toArray(new String[0]);
+  }
+
+  /**
+   * Locks {@code services}, wherever they are, all or none: waits up to {@code maxWait} for them to
+   * be free, first come first served per service. The lock is owned by this container: calls under
+   * it are made from here, and it lasts while this container lives and reaches the services'
+   * containers (docs/locks.md).
+   *
+   * <pre>{@code
+   * try (TRADELock lock = container.lock(List.of(head), Duration.ofSeconds(5))) {
+   *   head.call(lock.getId(), void.class, 30.0);
+   * }
+   * }</pre>
+   *
+   * @param services the services to lock; not empty
+   * @param maxWait the longest to wait for them; zero to take them only if free now
+   * @return the lock
+   * @throws TRADELockedException if one is still held by another lock when {@code maxWait} ends
+   *     (the message names that lock, its container and since when)
+   * @throws TRADEBadArgumentsException if {@code services} is empty or names a system service
+   * @throws TRADEServiceUnavailableException if one is not available (any more)
+   * @throws TRADEException if a container cannot be reached; nothing is locked then
+   */
+  public TRADELock lock(Collection<TRADEServiceInfo> services, Duration maxWait)
+      throws TRADEException {
+    Objects.requireNonNull(maxWait, "maxWait == null");
+    checkOpen();
+    List<ServiceDescriptor> ds = new ArrayList<>();
+    for (TRADEServiceInfo s : services == null ? List.<TRADEServiceInfo>of() : services) {
+      ds.add(Objects.requireNonNull(s, "services contains null").descriptor());
+    }
+    long wait = maxWait.isNegative() ? 0 : maxWait.compareTo(Duration.ofDays(1)) > 0
+        ? Duration.ofDays(1).toNanos() : maxWait.toNanos();
+    return new TRADELock(this, core.locks().client(), core.locks().client().acquire(ds, wait));
+  }
+
+  /**
+   * Locks every service matching {@code constraints}; see {@link #lock(Collection, Duration)}.
+   *
+   * @param constraints the services to lock; null matches every service
+   * @param maxWait the longest to wait for them; zero to take them only if free now
+   * @return the lock
+   * @throws TRADEException as {@link #lock(Collection, Duration)}; {@link TRADEBadArgumentsException}
+   *     when nothing matches
+   */
+  public TRADELock lock(TRADEServiceConstraints constraints, Duration maxWait)
+      throws TRADEException {
+    return lock(getAvailableServices(constraints), maxWait);
+  }
+
+  /**
+   * Releases lock {@code lock}: in every container where it holds services, they are free again.
+   *
+   * @param lock the lock's id
+   * @throws TRADEException {@link TRADEBadArgumentsException} if no lock of that id is held
+   *     (released already, its lease ended, or never granted);
+   *     {@link TRADENotAuthorizedException} if another container owns it
+   */
+  public void releaseLock(UUID lock) throws TRADEException {
+    checkOpen();
+    core.locks().client().release(lock);
+  }
+
+  /**
+   * Every lock's claims on services, from every container that answers: for each locked service
+   * its holder, then the locks waiting for it in the order they will be served.
+   *
+   * @return the claims, by container, then by service; maybe none
+   * @throws TRADEException if this container is closed meanwhile
+   */
+  public List<TRADELockInfo> getLocks() throws TRADEException {
+    checkOpen();
+    List<TRADELockInfo> infos = new ArrayList<>();
+    for (Map<String, Object> m : core.locks().client().list()) {
+      Object service = m.get("service");
+      if (service instanceof TRADEServiceInfo) {
+        infos.add(new TRADELockInfo((TRADEServiceInfo) service,
+            UUID.fromString((String) m.get("lock")), (String) m.get("container"),
+            (String) m.get("containerName"), (String) m.get("principal"),
+            (Instant) m.get("since"), (Boolean) m.get("holding"),
+            ((Number) m.get("token")).longValue()));
+      }
+    }
+    return infos;
   }
 
   /**

@@ -6,8 +6,8 @@ package dev.trade;
  * <p>Callers that need to know what happened catch one of the subclasses rather than reading the
  * message: {@link TRADEServiceNotFoundException}, {@link TRADEServiceUnavailableException},
  * {@link TRADEInvocationException}, {@link TRADEBadArgumentsException},
- * {@link TRADETimeoutException}, {@link TRADERegistrationException} and
- * {@link TRADESerializationException}.
+ * {@link TRADETimeoutException}, {@link TRADERegistrationException},
+ * {@link TRADESerializationException} and {@link TRADELockedException}.
  */
 public class TRADEException extends Exception {
   private static final long serialVersionUID = 1L;

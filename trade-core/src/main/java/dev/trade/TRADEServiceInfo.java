@@ -13,6 +13,7 @@ import java.util.Collections;
 import java.util.List;
 import java.util.LinkedHashSet;
 import java.util.Objects;
+import java.util.UUID;
 import java.util.concurrent.CompletableFuture;
 
 /**
@@ -58,15 +59,18 @@ public final class TRADEServiceInfo implements Serializable, Cloneable {
   private final transient ServiceDescriptor descriptor;
   private final transient ServiceCaller caller;
   private final transient long timeoutNanos;
+  private final transient boolean waitForLock;
 
   TRADEServiceInfo(ServiceDescriptor descriptor, ServiceCaller caller) {
-    this(descriptor, caller, 0);
+    this(descriptor, caller, 0, false);
   }
 
-  private TRADEServiceInfo(ServiceDescriptor descriptor, ServiceCaller caller, long timeoutNanos) {
+  private TRADEServiceInfo(ServiceDescriptor descriptor, ServiceCaller caller, long timeoutNanos,
+      boolean waitForLock) {
     this.descriptor = Objects.requireNonNull(descriptor, "descriptor == null");
     this.caller = Objects.requireNonNull(caller, "caller == null");
     this.timeoutNanos = timeoutNanos;
+    this.waitForLock = waitForLock;
     this.serviceName = descriptor.name();
     List<String> types = descriptor.parameterTypeNames();
     String[] binary = new String[types.size()];
@@ -108,7 +112,53 @@ public final class TRADEServiceInfo implements Serializable, Cloneable {
    */
   public <T> T call(Class<T> returnType, Object... args) throws TRADEException {
     Objects.requireNonNull(returnType, "returnType == null");
-    return caller.call(descriptor, returnType, args, timeoutNanos);
+    return waitForLock ? caller.callUnderLock(descriptor, null, true, returnType, args, timeoutNanos)
+        : caller.call(descriptor, returnType, args, timeoutNanos);
+  }
+
+  /**
+   * Calls the service under lock {@code lock} (TRADE 1.1.1's form): the call carries the lock's id
+   * and its fencing token for this service, and the service's container lets it run only while
+   * that lock holds the service. Calls under a lock are made from the container that took it.
+   *
+   * <pre>{@code
+   * UUID lock = TRADE.lockServicesContainAll(List.of("head"));
+   * if (lock != null) {
+   *   try {
+   *     head.call(lock, void.class, 30.0);
+   *   } finally {
+   *     TRADE.releaseLock(lock);
+   *   }
+   * }
+   * }</pre>
+   *
+   * @param <T> the type of the result
+   * @param lock the lock's id, as {@code lockServicesContainAll} or {@link TRADELock#getId()}
+   *     gave it; null makes this an ordinary {@link #call(Class, Object...)}
+   * @param returnType the class of the result (as for {@link #call(Class, Object...)}); not null
+   * @param args the arguments, in the order of the service's parameters
+   * @return the service's result as {@code returnType}; null for {@code void.class}
+   * @throws TRADELockedException the lock does not hold the service (any more: released, its
+   *     lease ended, it left, or the lock was not taken from this container); the service did not
+   *     run
+   * @throws TRADEException as {@link #call(Class, Object...)} otherwise
+   */
+  public <T> T call(UUID lock, Class<T> returnType, Object... args) throws TRADEException {
+    Objects.requireNonNull(returnType, "returnType == null");
+    return lock == null && !waitForLock ? caller.call(descriptor, returnType, args, timeoutNanos)
+        : caller.callUnderLock(descriptor, lock, waitForLock, returnType, args, timeoutNanos);
+  }
+
+  /**
+   * This service info, whose synchronous calls wait while another lock holds the service, until
+   * it is free or the call's deadline passes (then {@link TRADELockedException}); without it, a
+   * call to a service locked by another lock fails at once. Asynchronous calls do not wait. Equal
+   * to this one.
+   *
+   * @return a service info for the same service whose calls wait for locks
+   */
+  public TRADEServiceInfo waitingForLock() {
+    return new TRADEServiceInfo(descriptor, caller, timeoutNanos, true);
   }
 
   /**
@@ -153,7 +203,7 @@ public final class TRADEServiceInfo implements Serializable, Cloneable {
     } catch (ArithmeticException tooLong) {
       nanos = Long.MAX_VALUE / 4; // centuries: as good as no deadline, without overflowing it
     }
-    return new TRADEServiceInfo(descriptor, caller, nanos);
+    return new TRADEServiceInfo(descriptor, caller, nanos, waitForLock);
   }
 
   /**
@@ -268,7 +318,7 @@ public final class TRADEServiceInfo implements Serializable, Cloneable {
    */
   @Override
   public TRADEServiceInfo clone() {
-    return new TRADEServiceInfo(descriptor, caller, timeoutNanos);
+    return new TRADEServiceInfo(descriptor, caller, timeoutNanos, waitForLock);
   }
 
   private static Class<?> resolve(String typeName) {

@@ -16,6 +16,7 @@ import java.net.InetAddress;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
+import java.util.UUID;
 
 /**
  * User code written against TRADE 1.1.1's public API (docs/api.md, "Differences from TRADE 1.1.1";
@@ -184,6 +185,22 @@ public class Trade111Api {
     Serializable serializable = host;
   }
 
+  /** Locks over sets of services. */
+  void locks(TRADEServiceInfo s) {
+    UUID any = TRADE.lockServicesContainOne(List.of("arm"));
+    UUID every = TRADE.lockServicesContainAll(List.of("arm", "head"));
+    try {
+      TRADE.releaseLock(any);
+    } catch (TRADEException e) {
+      report(e);
+    }
+    try {
+      boolean b = s.call(every, boolean.class, 3);
+    } catch (TRADEException e) {
+      report(e);
+    }
+  }
+
   private static void report(Exception e) {
     e.printStackTrace();
   }
@@ -209,13 +226,6 @@ public class Trade111Api {
    *
    *   try { TRADE.beforeService(wrapper, target); } catch (TRADEException e) { report(e); }
    *   try { TRADE.afterService(wrapper, target); } catch (TRADEException e) { report(e); }
-   *
-   * Locks (#38):
-   *
-   *   UUID any = TRADE.lockServicesContainOne(List.of("arm"));
-   *   UUID every = TRADE.lockServicesContainAll(List.of("arm", "head"));
-   *   try { TRADE.releaseLock(any); } catch (TRADEException e) { report(e); }
-   *   try { boolean b = s.call(any, boolean.class, 3); } catch (TRADEException e) { report(e); }
    *
    * The middleware's own operations, with credentials (#39):
    *

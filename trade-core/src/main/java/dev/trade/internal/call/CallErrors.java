@@ -2,6 +2,7 @@ package dev.trade.internal.call;
 
 import dev.trade.TRADEBadArgumentsException;
 import dev.trade.TRADEInvocationException;
+import dev.trade.TRADELockedException;
 import dev.trade.TRADEServiceUnavailableException;
 import dev.trade.TRADETimeoutException;
 import dev.trade.internal.registry.ServiceDescriptor;
@@ -37,6 +38,15 @@ public final class CallErrors {
   /** A service that cannot take the call now, though it may later. */
   public static String notNowText(String why) {
     return NOT_NOW + why;
+  }
+
+  /**
+   * A call refused by the service's lock: {@code why} says which lock is in the way, or why the
+   * call's own lock does not hold the service.
+   */
+  public static TRADELockedException locked(ServiceDescriptor d, String why) {
+    return new TRADELockedException("Service " + d.signature() + " of container "
+        + d.containerName() + " refused the call: " + why);
   }
 
   /** The caller waited {@code timeoutNanos} without an answer; {@code more} may say why. */

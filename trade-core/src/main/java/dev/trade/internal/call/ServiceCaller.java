@@ -2,6 +2,7 @@ package dev.trade.internal.call;
 
 import dev.trade.TRADEException;
 import dev.trade.internal.registry.ServiceDescriptor;
+import java.util.UUID;
 import java.util.concurrent.CompletableFuture;
 
 /**
@@ -25,6 +26,18 @@ public interface ServiceCaller {
    */
   <T> T call(ServiceDescriptor service, Class<T> returnType, Object[] args, long timeoutNanos)
       throws TRADEException;
+
+  /**
+   * Calls the service under lock {@code lock} (null: none), waiting for the service while another
+   * lock holds it when {@code waitForLock}; otherwise as {@link #call}.
+   */
+  default <T> T callUnderLock(ServiceDescriptor service, UUID lock, boolean waitForLock,
+      Class<T> returnType, Object[] args, long timeoutNanos) throws TRADEException {
+    if (lock != null || waitForLock) {
+      throw new UnsupportedOperationException("this caller does not take calls under locks");
+    }
+    return call(service, returnType, args, timeoutNanos);
+  }
 
   /**
    * Calls the service without waiting; the future fails with the {@code TRADEException} that

@@ -19,6 +19,7 @@ import dev.trade.internal.codec.Codec;
 import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.codec.Limits;
 import dev.trade.internal.config.Settings;
+import dev.trade.internal.lock.Locks;
 import dev.trade.internal.net.Network;
 import dev.trade.internal.notify.NotificationClient;
 import dev.trade.internal.notify.NotificationService;
@@ -79,6 +80,7 @@ public final class ContainerCore implements ServiceCaller {
   private volatile boolean closed;
   private final Notifications notifications;
   private final NotificationClient notificationClient;
+  private final Locks locks;
   /** Runs local asynchronous calls and decodes remote replies of asynchronous calls; lazily made. */
   private ExecutorService asyncPool; // Guarded by this.
 
@@ -107,7 +109,9 @@ public final class ContainerCore implements ServiceCaller {
     this.codec = new Codec(allowList, limits, infos);
     this.copier = settings.copyDataForLocalInvokes() ? codec::copy : null;
     this.defaultTimeoutNanos = settings.callTimeout().toNanos();
-    this.hostChain = new CallChain(hostLinks(), new LocalInvoker(registry));
+    this.locks = new Locks(registry, this, infos, settings.failureTimeout(), settings.callTimeout(),
+        name);
+    this.hostChain = new CallChain(hostLinks(locks.link()), new LocalInvoker(registry));
     this.remote = new RemoteCaller(allowList, () -> network);
     this.self = Caller.of(uuid);
     this.notifications = new Notifications(registry, this, infos, constraints, name);
@@ -130,8 +134,9 @@ public final class ContainerCore implements ServiceCaller {
         }, constraints, name);
     try {
       registerSystem(new NotificationService(notifications, infos));
+      locks.registered(registerSystem(locks.service()));
     } catch (TRADEException e) {
-      throw new IllegalStateException("the notification service cannot be registered", e);
+      throw new IllegalStateException("a system service cannot be registered", e);
     }
     if (networked(settings)) {
       network = startNetwork();
@@ -189,13 +194,18 @@ public final class ContainerCore implements ServiceCaller {
   }
 
   /** Registers one of the container's own providers in the reserved group. */
-  private void registerSystem(Object provider) throws TRADEException {
-    registry.register(provider, Set.of(SystemGroup.NAME));
+  private List<LocalService> registerSystem(Object provider) throws TRADEException {
+    return registry.register(provider, Set.of(SystemGroup.NAME));
   }
 
   /** The requester's side of notifications (the static API's client of the notification services). */
   public NotificationClient notifications() {
     return notificationClient;
+  }
+
+  /** Locks: the requester's side behind the static API (taking, releasing, listing). */
+  public Locks locks() {
+    return locks;
   }
 
   /** See {@link Registry#deregister}. */
@@ -303,8 +313,23 @@ public final class ContainerCore implements ServiceCaller {
     Object[] normalized = Arguments.normalize(d, args);
     long timeout = timeoutNanos > 0 ? timeoutNanos : defaultTimeoutNanos;
     return d.containerId().equals(id)
-        ? callLocal(d, returnType, normalized, timeout)
+        ? callLocal(d, returnType, normalized, timeout, CallContext.EMPTY)
         : remote.call(d, returnType, normalized, CallContext.EMPTY, timeout);
+  }
+
+  /**
+   * As {@link #call}, with the context of a call under {@code lock} (its id and this service's
+   * fencing token) and, when {@code waitForLock}, the request to wait for a locked service.
+   */
+  @Override
+  public <T> T callUnderLock(ServiceDescriptor d, UUID lock, boolean waitForLock,
+      Class<T> returnType, Object[] args, long timeoutNanos) throws TRADEException {
+    Object[] normalized = Arguments.normalize(d, args);
+    long timeout = timeoutNanos > 0 ? timeoutNanos : defaultTimeoutNanos;
+    CallContext context = locks.client().context(d, lock, waitForLock);
+    return d.containerId().equals(id)
+        ? callLocal(d, returnType, normalized, timeout, context)
+        : remote.call(d, returnType, normalized, context, timeout);
   }
 
   /**
@@ -323,7 +348,7 @@ public final class ContainerCore implements ServiceCaller {
       if (d.containerId().equals(id)) {
         return CompletableFuture.supplyAsync(() -> {
           try {
-            return callLocal(d, returnType, normalized, timeout);
+            return callLocal(d, returnType, normalized, timeout, CallContext.EMPTY);
           } catch (TRADEException e) {
             throw new CompletionException(e);
           }
@@ -352,12 +377,12 @@ public final class ContainerCore implements ServiceCaller {
    * fill it in this order: {@code access → locks → hooks → invoke} (access control first, so that
    * nothing else sees a refused call; hooks last, so that they see only calls that will run).
    */
-  private static List<CallLink> hostLinks() {
-    return List.of(); // access, locks and hooks come with their features
+  private static List<CallLink> hostLinks(CallLink locks) {
+    return List.of(locks); // access and hooks come with their features
   }
 
-  private <T> T callLocal(ServiceDescriptor d, Class<T> returnType, Object[] args, long timeout)
-      throws TRADEException {
+  private <T> T callLocal(ServiceDescriptor d, Class<T> returnType, Object[] args, long timeout,
+      CallContext context) throws TRADEException {
     LocalService s = registry.local(d.serviceId());
     if (s == null) {
       throw CallErrors.gone(d, "it was deregistered");
@@ -365,7 +390,7 @@ public final class ContainerCore implements ServiceCaller {
     Returns.check(d, returnType, s.returnType());
     if (copier == null) {
       return Returns.convert(d, returnType,
-          hostChain.call(Invocation.local(d, args, timeout, self, CallContext.EMPTY)));
+          hostChain.call(Invocation.local(d, args, timeout, self, context)));
     }
     ClassLoader providerLoader = s.target().getClass().getClassLoader();
     if (providerLoader == null) {
@@ -375,7 +400,7 @@ public final class ContainerCore implements ServiceCaller {
     for (int i = 0; i < args.length; i++) {
       copies[i] = copier.copy(args[i], providerLoader, s.declaredTypes());
     }
-    Object result = hostChain.call(Invocation.local(d, copies, timeout, self, CallContext.EMPTY));
+    Object result = hostChain.call(Invocation.local(d, copies, timeout, self, context));
     return Returns.convert(d, returnType,
         copier.copy(result, RemoteCaller.callerLoader(returnType), s.declaredTypes()));
   }
@@ -387,6 +412,7 @@ public final class ContainerCore implements ServiceCaller {
       // Notifications stop first: disconnecting makes every other container's services
       // unreachable from here, and reporting them as "left" would be false.
       notifications.close();
+      locks.close();
       registry.deregisterAll();
       synchronized (this) {
         if (network != null) {

@@ -110,6 +110,25 @@ class FrameExamplesTest {
         CallContext.of(Map.of("x.trace", "42")));
   }
 
+  /** The same call under a lock: its id and the service's fencing token (docs/locks.md). */
+  private static byte[] callFrameUnderLock() throws Exception {
+    Registry registry = new Registry(ARM.toString(), "arm", "robot1");
+    ServiceDescriptor d = registry.register(new RobotArm(), List.of()).get(0).descriptor();
+    RemoteCalls hub = new RemoteCalls(HUB, codec(), null, null, null, 1 << 26);
+    return hub.callFrame(ARM, 1, d.serviceId(), 30_000, Arguments.normalize(d, new Object[] {3}),
+        CallContext.of(Map.of("trade.lock", "0f1e2d3c-4b5a-6978-8796-a5b4c3d2e1f0",
+            "trade.lock.token", "7")));
+  }
+
+  /** The arm's refusal of a call to a service another lock holds: status 7 and a text. */
+  private static byte[] lockedReplyFrame() throws Exception {
+    byte[] call = callFrame();
+    byte[] payload = Arrays.copyOfRange(call, Wire.HEADER, call.length);
+    ByteSink out = new ReplySender(ARM, null, null, 1 << 26).replyStart(payload, Wire.FAILED_LOCKED);
+    out.writeText("locked");
+    return Frames.finish(out);
+  }
+
   /** The arm's successful reply to that call: {@code true}. */
   private static byte[] replyFrame() throws Exception {
     byte[] call = callFrame();
@@ -181,6 +200,16 @@ class FrameExamplesTest {
   @Test
   void callWithContextExample() throws Exception {
     assertDocumented("call-context", callFrameWithContext());
+  }
+
+  @Test
+  void callUnderLockExample() throws Exception {
+    assertDocumented("call-lock", callFrameUnderLock());
+  }
+
+  @Test
+  void lockedReplyExample() throws Exception {
+    assertDocumented("reply-locked", lockedReplyFrame());
   }
 
   @Test

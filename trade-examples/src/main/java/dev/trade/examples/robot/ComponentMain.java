@@ -16,7 +16,7 @@ import java.util.concurrent.CountDownLatch;
  * Runs one robot component in this JVM, in a container of its own:
  *
  * <pre>
- * java -cp CLASSPATH dev.trade.examples.robot.ComponentMain --component arm|head|vision|nav|battery|planner
+ * java -cp CLASSPATH dev.trade.examples.robot.ComponentMain --component arm|head|vision|nav|battery|planner|lookout
  *     [--name NAME] [--groups G1,G2] [--config FILE] [--verbose]
  * </pre>
  *
@@ -35,7 +35,8 @@ import java.util.concurrent.CountDownLatch;
  * Exit status 2 means bad options or configuration.
  */
 public final class ComponentMain {
-  private static final List<String> KINDS = List.of("arm", "head", "vision", "nav", "battery", "planner");
+  private static final List<String> KINDS = List.of("arm", "head", "vision", "nav", "battery", "planner",
+      "lookout");
 
   private ComponentMain() {}
 
@@ -76,6 +77,11 @@ public final class ComponentMain {
       System.err.println(e.getMessage());
       System.exit(2);
       return;
+    }
+    if (kind.equals("lookout")) {
+      boolean done = new Lookout(trade, groups, System.out).run();
+      trade.close();
+      System.exit(done ? 0 : 1);
     }
     if (kind.equals("planner")) {
       boolean done = new Planner(trade, groups, System.out).run();

@@ -2,6 +2,8 @@ package dev.trade.examples.robot;
 
 import dev.trade.TRADEContainer;
 import dev.trade.TRADEException;
+import dev.trade.TRADELock;
+import dev.trade.TRADELockInfo;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
@@ -33,7 +35,8 @@ import java.util.concurrent.TimeUnit;
  *       battery with a {@code when} notification: {@code isLow()}, asked every
  *       {@value #BATTERY_PERIOD_MS} ms in the battery's own container, calls {@link #batteryLow}
  *       the first time it is true;
- *   <li>picks up the cup the camera sees;
+ *   <li>picks up the cup the camera sees, holding a lock on the head while it looks; it releases
+ *       the head once another process (the lookout) waits for it;
  *   <li>says {@code waiting for navigation to join} and waits for a {@code goTo} service, then
  *       drives to the kitchen;
  *   <li>says {@code watching for people} and keeps asking the camera, through the handle it got in
@@ -155,11 +158,18 @@ public final class Planner {
     out.println("watching the battery: when isLow() (every " + BATTERY_PERIOD_MS + " ms, on "
         + isLow.getContainerName() + ") then batteryLow()");
 
-    // 3. Fetch the cup.
-    pan.call(double.class, -20.0);
-    tilt.call(double.class, -35.0);
-    Detection cup = checkFor.call(Detection.class, "cup");
-    out.println("the camera sees " + cup);
+    // 3. Fetch the cup, holding the head while looking (a lock over services of the head's
+    // container: nobody else turns it meanwhile).
+    Detection cup;
+    try (TRADELock look = trade.lock(List.of(pan, tilt), WAIT)) {
+      out.println("holding the head while looking for the cup");
+      pan.call(look.getId(), double.class, -20.0);
+      tilt.call(look.getId(), double.class, -35.0);
+      cup = checkFor.call(Detection.class, "cup");
+      out.println("the camera sees " + cup);
+      awaitWaiterFor(pan);
+    }
+    out.println("released the head");
     if (!cup.found()) {
       throw new ScenarioFailure("no cup in sight");
     }
@@ -189,7 +199,7 @@ public final class Planner {
       throw new ScenarioFailure("a camera is still there; the failure did not happen");
     }
     out.println("no camera left: putting the cup down on the counter without looking");
-    pan.call(double.class, 0.0);
+    pan.waitingForLock().call(double.class, 0.0); // the lookout may still hold the head
     moveTo.call(Pose.class, COUNTER);
     open.call(boolean.class, 20);
     out.println("cup delivered; battery at " + level.call(int.class) + "%");
@@ -197,6 +207,25 @@ public final class Planner {
       trade.cancelNotification(this, "when", null);
       out.println("the battery never ran low: battery watch cancelled");
     }
+  }
+
+  /**
+   * Waits until another process's lock request waits for {@code service}, seen through the locks
+   * every container lists (introspection), and names it; gives up after {@link #WAIT}.
+   */
+  private void awaitWaiterFor(TRADEServiceInfo service) throws TRADEException, InterruptedException {
+    long deadline = System.nanoTime() + WAIT.toNanos();
+    while (System.nanoTime() - deadline < 0) {
+      for (TRADELockInfo i : trade.getLocks()) {
+        if (!i.isHolding() && i.getService().equals(service)) {
+          out.println("container " + i.getContainerName() + " waits for the head since "
+              + i.getSince() + ": releasing it");
+          return;
+        }
+      }
+      waitForChange(deadline, WATCH_PERIOD_MS);
+    }
+    out.println("nobody asked for the head");
   }
 
   /**

@@ -45,7 +45,14 @@ class DemoLaunchTest {
         + " battery", deadline);
     t.await("planner", "watching the battery: when isLow() (every 100 ms, on battery) then"
         + " batteryLow()", deadline);
+    // The lookout competes for the head: told who holds it, it waits, and gets it on release.
+    t.await("planner", "holding the head while looking for the cup", deadline);
     t.await("planner", "the camera sees a cup at (0.40, 0.10, 0.02)", deadline);
+    t.await("lookout", "the head is busy: ", deadline);
+    assertTrue(t.contains("lookout", "of container planner"), t.toString());
+    t.await("planner", "container lookout waits for the head since", deadline);
+    t.await("lookout", "got the head: looking around", deadline);
+    t.await("lookout", "released the head", deadline);
     t.await("arm", "opening gripper at speed 40", deadline);
     t.await("planner", "picked up the cup", deadline);
 

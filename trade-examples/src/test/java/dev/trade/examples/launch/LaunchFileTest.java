@@ -123,7 +123,7 @@ class LaunchFileTest {
   void theShippedDemoLaunchFileIsValid() throws Exception {
     LaunchFile demo = LaunchFile.read(Jvms.projectRoot().resolve("config/demo.launch"));
     assertTrue(demo.properties().endsWith(Path.of("config", "demo.properties")), demo.properties().toString());
-    assertEquals(List.of("arm", "head", "battery", "vision", "planner", "nav"),
+    assertEquals(List.of("arm", "head", "battery", "vision", "planner", "lookout", "nav"),
         demo.components().stream().map(LaunchFile.Component::name).toList());
   }
 }

@@ -35,6 +35,7 @@ public final class Wire {
   public static final int FAILED_SERIALIZATION = 4;
   public static final int FAILED_TIMEOUT = 5;
   public static final int FAILED_OTHER = 6;
+  public static final int FAILED_LOCKED = 7;
 
   // REFUSE reasons.
   static final int REFUSE_VERSION = 1;

@@ -3,6 +3,7 @@ package dev.trade.internal.net.remote;
 import dev.trade.TRADEBadArgumentsException;
 import dev.trade.TRADEException;
 import dev.trade.TRADEInvocationException;
+import dev.trade.TRADELockedException;
 import dev.trade.TRADESerializationException;
 import dev.trade.TRADEServiceUnavailableException;
 import dev.trade.TRADETimeoutException;
@@ -317,6 +318,8 @@ public final class RemoteCalls {
         throw new TRADESerializationException(in.readText(MAX_TEXT));
       case Wire.FAILED_TIMEOUT:
         throw new TRADETimeoutException(in.readText(MAX_TEXT));
+      case Wire.FAILED_LOCKED:
+        throw new TRADELockedException(in.readText(MAX_TEXT));
       default:
         throw new TRADEException(in.readText(MAX_TEXT));
     }
