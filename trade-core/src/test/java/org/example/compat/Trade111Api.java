@@ -10,12 +10,14 @@ import dev.trade.TRADENotAuthorizedException;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
+import java.io.InputStream;
 import java.io.Serializable;
 import java.lang.annotation.Annotation;
 import java.net.InetAddress;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
+import java.util.Map;
 
 /**
  * User code written against TRADE 1.1.1's public API (docs/api.md, "Differences from TRADE 1.1.1";
@@ -184,6 +186,27 @@ public class Trade111Api {
     Serializable serializable = host;
   }
 
+  /** The middleware's own operations, with credentials (#39). */
+  void middleware(String credentials, InputStream inputStream, TRADEServiceInfo s) {
+    try { TRADE.reset(credentials); } catch (TRADEException e) { report(e); }
+    try { TRADE.loadConfig(credentials, inputStream); } catch (TRADEException e) { report(e); }
+    try { TRADE.accessToTRADEServices(credentials, true); } catch (TRADEException e) { report(e); }
+    try { TRADE.findInterfaces(credentials); } catch (TRADEException e) { report(e); }
+    try { TRADE.setEncryption(credentials, true); } catch (TRADEException e) { report(e); }
+    try { TRADE.shutdownTRADE(credentials); } catch (TRADEException e) { report(e); }
+    try { TRADE.setBroadcast(credentials, true); } catch (TRADEException e) { report(e); }
+    try { TRADE.setDiscovery(credentials, true); } catch (TRADEException e) { report(e); }
+    try { Map<String, Collection<String>> graph = TRADE.getTRADEContainerGraph(credentials); }
+    catch (TRADEException e) { report(e); }
+    try { TRADE.startListenForConnections(credentials, "127.0.0.1", 10002); }
+    catch (TRADEException e) { report(e); }
+    try { TRADE.stopListenForConnections(credentials); } catch (TRADEException e) { report(e); }
+    try { TRADE.setServiceGroups(s, List.of("a")); } catch (TRADEException e) { report(e); }
+    try { TRADE.addServiceGroups(s, List.of("a")); } catch (TRADEException e) { report(e); }
+    try { TRADE.removeServiceGroups(s, List.of("a")); } catch (TRADEException e) { report(e); }
+    try { TRADE.resetServiceGroups(s); } catch (TRADEException e) { report(e); }
+  }
+
   private static void report(Exception e) {
     e.printStackTrace();
   }
@@ -216,25 +239,5 @@ public class Trade111Api {
    *   UUID every = TRADE.lockServicesContainAll(List.of("arm", "head"));
    *   try { TRADE.releaseLock(any); } catch (TRADEException e) { report(e); }
    *   try { boolean b = s.call(any, boolean.class, 3); } catch (TRADEException e) { report(e); }
-   *
-   * The middleware's own operations, with credentials (#39):
-   *
-   *   try { TRADE.reset(credentials); } catch (TRADEException e) { report(e); }
-   *   try { TRADE.loadConfig(credentials, inputStream); } catch (TRADEException e) { report(e); }
-   *   try { TRADE.accessToTRADEServices(credentials, true); } catch (TRADEException e) { report(e); }
-   *   try { TRADE.findInterfaces(credentials); } catch (TRADEException e) { report(e); }
-   *   try { TRADE.setEncryption(credentials, true); } catch (TRADEException e) { report(e); }
-   *   try { TRADE.shutdownTRADE(credentials); } catch (TRADEException e) { report(e); }
-   *   try { TRADE.setBroadcast(credentials, true); } catch (TRADEException e) { report(e); }
-   *   try { TRADE.setDiscovery(credentials, true); } catch (TRADEException e) { report(e); }
-   *   try { Map<String, Collection<String>> graph = TRADE.getTRADEContainerGraph(credentials); }
-   *   catch (TRADEException e) { report(e); }
-   *   try { TRADE.startListenForConnections(credentials, "127.0.0.1", 10002); }
-   *   catch (TRADEException e) { report(e); }
-   *   try { TRADE.stopListenForConnections(credentials); } catch (TRADEException e) { report(e); }
-   *   try { TRADE.setServiceGroups(s, List.of("a")); } catch (TRADEException e) { report(e); }
-   *   try { TRADE.addServiceGroups(s, List.of("a")); } catch (TRADEException e) { report(e); }
-   *   try { TRADE.removeServiceGroups(s, List.of("a")); } catch (TRADEException e) { report(e); }
-   *   try { TRADE.resetServiceGroups(s); } catch (TRADEException e) { report(e); }
    */
 }

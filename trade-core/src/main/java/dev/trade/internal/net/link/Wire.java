@@ -35,6 +35,8 @@ public final class Wire {
   public static final int FAILED_SERIALIZATION = 4;
   public static final int FAILED_TIMEOUT = 5;
   public static final int FAILED_OTHER = 6;
+  /** The provider's access control refused the call (docs/protocol.md, "Proof of a principal"). */
+  public static final int FAILED_NOT_AUTHORIZED = 7;
 
   // REFUSE reasons.
   static final int REFUSE_VERSION = 1;

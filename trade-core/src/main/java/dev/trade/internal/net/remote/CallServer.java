@@ -3,6 +3,7 @@ package dev.trade.internal.net.remote;
 import dev.trade.TRADEBadArgumentsException;
 import dev.trade.TRADEException;
 import dev.trade.TRADEInvocationException;
+import dev.trade.TRADENotAuthorizedException;
 import dev.trade.TRADESerializationException;
 import dev.trade.TRADEServiceUnavailableException;
 import dev.trade.TRADETimeoutException;
@@ -124,6 +125,8 @@ final class CallServer {
       replies.reply(from, payload, Wire.FAILED_SERIALIZATION, e.getMessage());
     } catch (TRADETimeoutException e) {
       replies.reply(from, payload, Wire.FAILED_TIMEOUT, e.getMessage());
+    } catch (TRADENotAuthorizedException e) {
+      replies.reply(from, payload, Wire.FAILED_NOT_AUTHORIZED, e.getMessage());
     } catch (TRADEException | RuntimeException e) {
       replies.reply(from, payload, Wire.FAILED_OTHER, String.valueOf(e.getMessage()));
     }

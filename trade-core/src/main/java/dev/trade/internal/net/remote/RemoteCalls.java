@@ -3,6 +3,7 @@ package dev.trade.internal.net.remote;
 import dev.trade.TRADEBadArgumentsException;
 import dev.trade.TRADEException;
 import dev.trade.TRADEInvocationException;
+import dev.trade.TRADENotAuthorizedException;
 import dev.trade.TRADESerializationException;
 import dev.trade.TRADEServiceUnavailableException;
 import dev.trade.TRADETimeoutException;
@@ -299,6 +300,8 @@ public final class RemoteCalls {
         throw new TRADESerializationException(in.readText(MAX_TEXT));
       case Wire.FAILED_TIMEOUT:
         throw new TRADETimeoutException(in.readText(MAX_TEXT));
+      case Wire.FAILED_NOT_AUTHORIZED:
+        throw new TRADENotAuthorizedException(in.readText(MAX_TEXT));
       default:
         throw new TRADEException(in.readText(MAX_TEXT));
     }
