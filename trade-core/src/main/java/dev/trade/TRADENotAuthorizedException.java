@@ -1,10 +1,10 @@
 package dev.trade;
 
 /**
- * The caller is not allowed to do what it asked: TRADE 1.1.1's type for a refused administrative
- * call. This version has no access control yet (every operation is open), so nothing throws it
- * today; it exists so that code catching it compiles, and access control will report refusals with
- * it.
+ * The caller is not allowed to do what it asked: the providing container's access control refused
+ * the call before it ran (docs/security.md, "Access control"). The message names the service, its
+ * container and what was missing (a role, a valid or fresh proof of a principal); it never holds a
+ * secret. TRADE 1.1.1's type for a refused administrative call.
  */
 public class TRADENotAuthorizedException extends TRADEException {
   private static final long serialVersionUID = 1L;

@@ -36,7 +36,7 @@ public final class Proofs {
   private Proofs() {}
 
   /** The key derived from a principal's secret: the only form of it a MAC is made with. */
-  static byte[] key(String principal, String secret) {
+  public static byte[] key(String principal, String secret) {
     return HmacSha256.of(secret.getBytes(StandardCharsets.UTF_8),
         ("trade.auth.key.1\n" + principal).getBytes(StandardCharsets.UTF_8));
   }
@@ -69,7 +69,8 @@ public final class Proofs {
         destination, serviceId, nowMillis, nonce());
   }
 
-  static String sign(String principal, byte[] key, String source, String destination,
+  /** The proof of {@code principal}, whose key is {@code key}, with this time and nonce. */
+  public static String sign(String principal, byte[] key, String source, String destination,
       long serviceId, long timeMillis, String nonce) {
     return VERSION + " " + principal + " " + timeMillis + " " + nonce + " "
         + HEX.formatHex(mac(key, principal, source, destination, serviceId, timeMillis, nonce));
