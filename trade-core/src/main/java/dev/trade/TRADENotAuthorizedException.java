@@ -9,10 +9,21 @@ package dev.trade;
 public class TRADENotAuthorizedException extends TRADEException {
   private static final long serialVersionUID = 1L;
 
+  /**
+   * A refusal described by {@code message}.
+   *
+   * @param message what was refused and what was missing; never a secret
+   */
   public TRADENotAuthorizedException(String message) {
     super(message);
   }
 
+  /**
+   * A refusal described by {@code message}, caused by {@code cause}.
+   *
+   * @param message what was refused and what was missing; never a secret
+   * @param cause the failure behind it
+   */
   public TRADENotAuthorizedException(String message, Throwable cause) {
     super(message, cause);
   }

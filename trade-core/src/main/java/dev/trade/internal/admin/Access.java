@@ -25,11 +25,14 @@ public final class Access {
 
   private final String self;
   private final Credentials own;
+  /** The key of {@link #own}, derived once: every call this container makes proves it. */
+  private final byte[] ownKey;
   private final AccessLink link;
 
   private Access(String self, Credentials own, AccessLink link) {
     this.self = self;
     this.own = own;
+    this.ownKey = own.isAnonymous() ? null : Proofs.key(own.principal(), own.secret());
     this.link = link;
   }
 
@@ -82,6 +85,10 @@ public final class Access {
 
   /** The context of a call this container makes on its own behalf ({@code PRINCIPAL}). */
   public CallContext ownContext(ServiceDescriptor d) {
-    return own.isAnonymous() ? CallContext.EMPTY : context(own, d);
+    if (ownKey == null) {
+      return CallContext.EMPTY;
+    }
+    return CallContext.of(Map.of(Proofs.KEY, Proofs.sign(own.principal(), ownKey, self,
+        d.containerId(), d.serviceId(), System.currentTimeMillis(), Proofs.nonce())));
   }
 }
