@@ -1,8 +1,10 @@
 package dev.trade;
 
+import java.io.InputStream;
 import java.time.Duration;
 import java.util.Collection;
 import java.util.List;
+import java.util.Map;
 import java.util.Objects;
 import java.util.UUID;
 
@@ -376,6 +378,182 @@ public final class TRADE {
    */
   public static List<TRADELockInfo> getLocks() throws TRADEException {
     return getDefaultContainer().getLocks();
+  }
+
+  /**
+   * Switches discovery of the default container on or off as {@code credentials}: see {@link TRADEContainer#setDiscovery(String, boolean)}.
+   *
+   * @param credentials {@code <principal>:<secret>}
+   * @param on whether to discover
+   * @throws TRADEException {@link TRADENotAuthorizedException} if the principal may not, or
+   *     another failure of the operation
+   */
+  public static void setDiscovery(String credentials, boolean on) throws TRADEException {
+    getDefaultContainer().setDiscovery(credentials, on);
+  }
+
+  /**
+   * Switches announcing of the default container as {@code credentials}: see {@link TRADEContainer#setBroadcast(String, boolean)}.
+   *
+   * @param credentials {@code <principal>:<secret>}
+   * @param on whether to announce
+   * @throws TRADEException {@link TRADENotAuthorizedException} if the principal may not, or
+   *     another failure of the operation
+   */
+  public static void setBroadcast(String credentials, boolean on) throws TRADEException {
+    getDefaultContainer().setBroadcast(credentials, on);
+  }
+
+  /**
+   * Asks for encryption on or off: see {@link TRADEContainer#setEncryption(String, boolean)}.
+   *
+   * @param credentials {@code <principal>:<secret>}
+   * @param on whether links should be encrypted
+   * @throws TRADEException {@link TRADENotAuthorizedException} if the principal may not, or
+   *     another failure of the operation
+   */
+  public static void setEncryption(String credentials, boolean on) throws TRADEException {
+    getDefaultContainer().setEncryption(credentials, on);
+  }
+
+  /**
+   * Accepts connections on {@code ip@port} too: see {@link TRADEContainer#startListenForConnections(String, String, int)}.
+   *
+   * @param credentials {@code <principal>:<secret>}
+   * @param ip the address to listen on
+   * @param port the port; 0 for any
+   * @throws TRADEException {@link TRADENotAuthorizedException} if the principal may not, or
+   *     another failure of the operation
+   */
+  public static void startListenForConnections(String credentials, String ip, int port) throws TRADEException {
+    getDefaultContainer().startListenForConnections(credentials, ip, port);
+  }
+
+  /**
+   * Stops accepting connections: see {@link TRADEContainer#stopListenForConnections(String)}.
+   *
+   * @param credentials {@code <principal>:<secret>}
+   * @throws TRADEException {@link TRADENotAuthorizedException} if the principal may not, or
+   *     another failure of the operation
+   */
+  public static void stopListenForConnections(String credentials) throws TRADEException {
+    getDefaultContainer().stopListenForConnections(credentials);
+  }
+
+  /**
+   * Lets other containers call the default container's services, or stops them: see {@link TRADEContainer#accessToTRADEServices(String, boolean)}.
+   *
+   * @param credentials {@code <principal>:<secret>}
+   * @param allowed whether other containers may call
+   * @throws TRADEException {@link TRADENotAuthorizedException} if the principal may not, or
+   *     another failure of the operation
+   */
+  public static void accessToTRADEServices(String credentials, boolean allowed) throws TRADEException {
+    getDefaultContainer().accessToTRADEServices(credentials, allowed);
+  }
+
+  /**
+   * Reads the network interfaces again: see {@link TRADEContainer#findInterfaces(String)}.
+   *
+   * @param credentials {@code <principal>:<secret>}
+   * @throws TRADEException {@link TRADENotAuthorizedException} if the principal may not, or
+   *     another failure of the operation
+   */
+  public static void findInterfaces(String credentials) throws TRADEException {
+    getDefaultContainer().findInterfaces(credentials);
+  }
+
+  /**
+   * The containers of the system and their links: see {@link TRADEContainer#getTRADEContainerGraph(String)}.
+   *
+   * @param credentials {@code <principal>:<secret>}
+   * @return each container's name with the names of the containers it links to
+   * @throws TRADEException {@link TRADENotAuthorizedException} if the principal may not, or
+   *     another failure of the operation
+   */
+  public static Map<String, Collection<String>> getTRADEContainerGraph(String credentials) throws TRADEException {
+    return getDefaultContainer().getTRADEContainerGraph(credentials);
+  }
+
+  /**
+   * Deregisters every user's service of the default container: see {@link TRADEContainer#reset(String)}.
+   *
+   * @param credentials {@code <principal>:<secret>}
+   * @throws TRADEException {@link TRADENotAuthorizedException} if the principal may not, or
+   *     another failure of the operation
+   */
+  public static void reset(String credentials) throws TRADEException {
+    getDefaultContainer().reset(credentials);
+  }
+
+  /**
+   * Shuts the default container down: see {@link TRADEContainer#shutdownTRADE(String)}.
+   *
+   * @param credentials {@code <principal>:<secret>}
+   * @throws TRADEException {@link TRADENotAuthorizedException} if the principal may not, or
+   *     another failure of the operation
+   */
+  public static void shutdownTRADE(String credentials) throws TRADEException {
+    getDefaultContainer().shutdownTRADE(credentials);
+  }
+
+  /**
+   * Applies a configuration to the running default container: see {@link TRADEContainer#loadConfig(String, InputStream)}.
+   *
+   * @param credentials {@code <principal>:<secret>}
+   * @param config a {@code trade.properties} stream
+   * @throws TRADEException {@link TRADENotAuthorizedException} if the principal may not, or
+   *     another failure of the operation
+   */
+  public static void loadConfig(String credentials, InputStream config) throws TRADEException {
+    getDefaultContainer().loadConfig(credentials, config);
+  }
+
+  /**
+   * Gives a service other groups, everywhere: see {@link TRADEContainer#setServiceGroups(TRADEServiceInfo, Collection)}.
+   *
+   * @param service the service
+   * @param groups its groups from now on
+   * @throws TRADEException {@link TRADENotAuthorizedException} if the principal may not, or
+   *     another failure of the operation
+   */
+  public static void setServiceGroups(TRADEServiceInfo service, Collection<String> groups) throws TRADEException {
+    getDefaultContainer().setServiceGroups(service, groups);
+  }
+
+  /**
+   * Adds groups to a service: see {@link TRADEContainer#addServiceGroups(TRADEServiceInfo, Collection)}.
+   *
+   * @param service the service
+   * @param groups the groups to add
+   * @throws TRADEException {@link TRADENotAuthorizedException} if the principal may not, or
+   *     another failure of the operation
+   */
+  public static void addServiceGroups(TRADEServiceInfo service, Collection<String> groups) throws TRADEException {
+    getDefaultContainer().addServiceGroups(service, groups);
+  }
+
+  /**
+   * Removes groups from a service: see {@link TRADEContainer#removeServiceGroups(TRADEServiceInfo, Collection)}.
+   *
+   * @param service the service
+   * @param groups the groups to remove
+   * @throws TRADEException {@link TRADENotAuthorizedException} if the principal may not, or
+   *     another failure of the operation
+   */
+  public static void removeServiceGroups(TRADEServiceInfo service, Collection<String> groups) throws TRADEException {
+    getDefaultContainer().removeServiceGroups(service, groups);
+  }
+
+  /**
+   * Removes every group of a service: see {@link TRADEContainer#resetServiceGroups(TRADEServiceInfo)}.
+   *
+   * @param service the service
+   * @throws TRADEException {@link TRADENotAuthorizedException} if the principal may not, or
+   *     another failure of the operation
+   */
+  public static void resetServiceGroups(TRADEServiceInfo service) throws TRADEException {
+    getDefaultContainer().resetServiceGroups(service);
   }
 
   /**

@@ -1,5 +1,6 @@
 package dev.trade;
 
+import dev.trade.internal.admin.AdminClient;
 import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.config.LoggingConfig;
 import dev.trade.internal.config.Settings;
@@ -9,6 +10,8 @@ import dev.trade.internal.registry.Entry;
 import dev.trade.internal.registry.LocalService;
 import dev.trade.internal.registry.ServiceDescriptor;
 import dev.trade.internal.registry.Suggestions;
+import java.io.IOException;
+import java.io.InputStream;
 import java.lang.annotation.Annotation;
 import java.net.InetSocketAddress;
 import java.time.Duration;
@@ -588,6 +591,339 @@ public final class TRADEContainer implements AutoCloseable {
    */
   public List<String> getNeighbours() {
     return core.neighbours();
+  }
+
+  // ---- The middleware's own operations (docs/middleware-services.md) ----
+
+  /**
+   * Switches multicast discovery of this container on or off, as {@code credentials}: through
+   * this container's middleware service {@code setDiscovery}, which by default only a principal
+   * with the role {@code admin} may call.
+   *
+   * @param credentials {@code <principal>:<secret>} of a principal in this container's access file
+   *     ({@code PRINCIPALSFILE}); anything else is anonymous
+   * @param on whether to discover
+   * @throws TRADENotAuthorizedException if the principal may not (the message says what is
+   *     missing)
+   * @throws TRADEException if discovery cannot be switched (its cause says why)
+   */
+  public void setDiscovery(String credentials, boolean on) throws TRADEException {
+    admin(credentials, "setDiscovery", void.class, on);
+  }
+
+  /**
+   * Switches announcing this container on or off, as {@code credentials}; see
+   * {@link #setDiscovery(String, boolean)}.
+   *
+   * @param credentials {@code <principal>:<secret>}
+   * @param on whether to announce
+   * @throws TRADENotAuthorizedException if the principal may not
+   * @throws TRADEException if announcing cannot be switched
+   */
+  public void setBroadcast(String credentials, boolean on) throws TRADEException {
+    admin(credentials, "setBroadcast", void.class, on);
+  }
+
+  /**
+   * Asks for encryption on or off, as {@code credentials}. Encryption is chosen per link at its
+   * handshake from {@code USEENCRYPTION} and cannot change while the container runs: asking for
+   * the setting it has succeeds, the other fails.
+   *
+   * @param credentials {@code <principal>:<secret>}
+   * @param on whether links should be encrypted
+   * @throws TRADENotAuthorizedException if the principal may not
+   * @throws TRADEBadArgumentsException if {@code on} differs from {@code USEENCRYPTION} (the
+   *     message says to change the setting and restart)
+   * @throws TRADEException if the call fails otherwise
+   */
+  public void setEncryption(String credentials, boolean on) throws TRADEException {
+    admin(credentials, "setEncryption", void.class, on);
+  }
+
+  /**
+   * Accepts connections on {@code ip} and {@code port} too, as {@code credentials}.
+   *
+   * @param credentials {@code <principal>:<secret>}
+   * @param ip the address to listen on, such as {@code 127.0.0.1}
+   * @param port the port; 0 for any free port ({@link #getServerAddresses()} tells which)
+   * @throws TRADENotAuthorizedException if the principal may not
+   * @throws TRADEException if the address cannot be bound (its cause says why)
+   */
+  public void startListenForConnections(String credentials, String ip, int port)
+      throws TRADEException {
+    admin(credentials, "startListenForConnections", String.class, ip, port);
+  }
+
+  /**
+   * Stops accepting connections, as {@code credentials}; links already made stay.
+   *
+   * @param credentials {@code <principal>:<secret>}
+   * @throws TRADENotAuthorizedException if the principal may not
+   * @throws TRADEException if the call fails otherwise
+   */
+  public void stopListenForConnections(String credentials) throws TRADEException {
+    admin(credentials, "stopListenForConnections", List.class);
+  }
+
+  /**
+   * Lets other containers call this container's ordinary services, or stops them, as
+   * {@code credentials}. While off, calls from other containers to ordinary services are refused
+   * with {@link TRADENotAuthorizedException}; system services stay under their policy, so an
+   * administrator can switch it on again from elsewhere.
+   *
+   * @param credentials {@code <principal>:<secret>}
+   * @param allowed whether other containers may call this container's services
+   * @throws TRADENotAuthorizedException if the principal may not
+   * @throws TRADEException if the call fails otherwise
+   */
+  public void accessToTRADEServices(String credentials, boolean allowed) throws TRADEException {
+    admin(credentials, "setRemoteAccess", void.class, allowed);
+  }
+
+  /**
+   * Reads the network interfaces again, as {@code credentials}: while this container announces
+   * itself, it announces the addresses of the interfaces up now at once.
+   *
+   * @param credentials {@code <principal>:<secret>}
+   * @throws TRADENotAuthorizedException if the principal may not
+   * @throws TRADEException if the call fails otherwise
+   */
+  public void findInterfaces(String credentials) throws TRADEException {
+    admin(credentials, "findInterfaces", List.class);
+  }
+
+  /**
+   * The containers of the system and their links, as each says itself (its middleware service
+   * {@code neighbours}, called as {@code credentials}).
+   *
+   * @param credentials {@code <principal>:<secret>} of a principal that every container's access
+   *     file lets call its middleware services
+   * @return each container's name, with the names of the containers it has a direct link to
+   *     (sorted); sorted by name
+   * @throws TRADENotAuthorizedException if a container refuses the principal
+   * @throws TRADEException if a container cannot be asked
+   */
+  public Map<String, Collection<String>> getTRADEContainerGraph(String credentials)
+      throws TRADEException {
+    checkOpen();
+    return core.admin().graph(credentials);
+  }
+
+  /**
+   * Every container of the system as it describes itself ({@code describeContainer}, see
+   * docs/middleware-services.md): id, name, host, addresses, uptime, services and links.
+   *
+   * @param credentials {@code <principal>:<secret>} that every container lets call its middleware
+   *     services
+   * @return one map per container, this one's first
+   * @throws TRADENotAuthorizedException if a container refuses the principal
+   * @throws TRADEException if a container cannot be asked
+   */
+  public List<Map<String, Object>> getContainers(String credentials) throws TRADEException {
+    checkOpen();
+    return core.admin().containers(credentials);
+  }
+
+  /**
+   * Deregisters every service users registered in this container, as {@code credentials}; its
+   * system services stay.
+   *
+   * @param credentials {@code <principal>:<secret>}
+   * @throws TRADENotAuthorizedException if the principal may not
+   * @throws TRADEException if the call fails otherwise
+   */
+  public void reset(String credentials) throws TRADEException {
+    admin(credentials, "reset", int.class);
+  }
+
+  /**
+   * Shuts this container down, as {@code credentials}: it closes shortly after the call returns,
+   * as {@link #close()} does.
+   *
+   * @param credentials {@code <principal>:<secret>}
+   * @throws TRADENotAuthorizedException if the principal may not
+   * @throws TRADEException if the call fails otherwise
+   */
+  public void shutdownTRADE(String credentials) throws TRADEException {
+    admin(credentials, "shutdown", void.class);
+  }
+
+  /**
+   * Applies a configuration to this running container, as {@code credentials}: the settings that
+   * can change at run time take effect ({@code STARTDISCOVERY}, {@code STARTBROADCAST},
+   * {@code CONNECTCONTAINERS} dialled once, and {@code SERVERIPS} listened on when
+   * {@code STARTACCEPTINGCONNECTIONS=true}); every other key must equal the running setting.
+   * Nothing changes when the configuration is refused.
+   *
+   * @param credentials {@code <principal>:<secret>}
+   * @param config a {@code trade.properties} stream; read to its end, not closed
+   * @throws TRADEBadArgumentsException if the stream is not a valid configuration, or sets a key
+   *     that only applies at start to another value (the message names the keys)
+   * @throws TRADENotAuthorizedException if the principal may not
+   * @throws TRADEException if applying a setting fails
+   */
+  public void loadConfig(String credentials, InputStream config) throws TRADEException {
+    Objects.requireNonNull(config, "config == null");
+    Properties p = new Properties();
+    Map<String, String> now = core.settings().asMap();
+    Map<String, String> wanted;
+    try {
+      p.load(config);
+      wanted = Settings.defaults().withAll(p).asMap();
+    } catch (IOException | IllegalArgumentException e) {
+      throw new TRADEBadArgumentsException("loadConfig: " + e.getMessage());
+    }
+    List<String> fixed = new ArrayList<>();
+    for (String key : p.stringPropertyNames()) {
+      if (!RUNTIME_KEYS.contains(key) && !Objects.equals(now.get(key), wanted.get(key))) {
+        fixed.add(key);
+      }
+    }
+    if (!fixed.isEmpty()) {
+      throw new TRADEBadArgumentsException("loadConfig: " + String.join(", ", fixed)
+          + " only take effect when a container starts; leave them out, or build a new container");
+    }
+    if (p.containsKey("STARTDISCOVERY")) {
+      setDiscovery(credentials, Boolean.parseBoolean(wanted.get("STARTDISCOVERY")));
+    }
+    if (p.containsKey("STARTBROADCAST")) {
+      setBroadcast(credentials, Boolean.parseBoolean(wanted.get("STARTBROADCAST")));
+    }
+    if (Boolean.parseBoolean(wanted.get("STARTACCEPTINGCONNECTIONS"))
+        && p.containsKey("SERVERIPS")) {
+      for (String a : wanted.get("SERVERIPS").split(",")) {
+        if (!a.isBlank()) {
+          int at = a.lastIndexOf('@');
+          startListenForConnections(credentials, a.substring(0, at).trim(),
+              Integer.parseInt(a.substring(at + 1).trim()));
+        }
+      }
+    }
+    if (p.containsKey("CONNECTCONTAINERS")) {
+      for (String a : wanted.get("CONNECTCONTAINERS").split(",")) {
+        if (!a.isBlank()) {
+          admin(credentials, "connect", void.class, a.trim());
+        }
+      }
+    }
+  }
+
+  private static final Set<String> RUNTIME_KEYS = Set.of("STARTDISCOVERY", "STARTBROADCAST",
+      "STARTACCEPTINGCONNECTIONS", "SERVERIPS", "CONNECTCONTAINERS");
+
+  /**
+   * Calls any service as {@code credentials}: with the proof of that principal, whatever this
+   * container's own ({@code PRINCIPAL}). With the handle of another container's middleware service
+   * (found with {@code inGroups("trade.system")}), it acts on that container.
+   *
+   * <pre>{@code
+   * TRADEServiceInfo discovery = container.getAvailableService(new TRADEServiceConstraints()
+   *     .inGroups("trade.system").name("setDiscovery").onHost("robot2"));
+   * container.callAs("alice:" + secret, discovery, void.class, true);
+   * }</pre>
+   *
+   * @param <T> the result's type
+   * @param credentials {@code <principal>:<secret>}; anything else is anonymous
+   * @param service the service to call
+   * @param returnType as {@link TRADEServiceInfo#call(Class, Object...)}
+   * @param args the arguments
+   * @return the result
+   * @throws TRADENotAuthorizedException if the service's container refuses the principal
+   * @throws TRADEException as {@link TRADEServiceInfo#call(Class, Object...)}; a typed failure
+   *     of a middleware service is thrown as itself
+   */
+  public <T> T callAs(String credentials, TRADEServiceInfo service, Class<T> returnType,
+      Object... args) throws TRADEException {
+    Objects.requireNonNull(service, "service == null");
+    checkOpen();
+    return core.admin().call(AdminClient.credentials(credentials), service.descriptor(), returnType,
+        args);
+  }
+
+  /**
+   * Gives {@code service} the groups {@code groups}: lookups in every container see the change.
+   * A service of this container changes at once; a service of another container changes through
+   * its middleware service {@code setServiceGroups}, called as this container's own principal
+   * ({@code PRINCIPAL}), which that container's policy must allow.
+   *
+   * @param service the service; not null
+   * @param groups its groups from now on; null or blank names are left out
+   * @throws TRADERegistrationException if {@code groups} names the reserved group, or the service
+   *     is a system service
+   * @throws TRADEServiceNotFoundException if the service is not registered (any more)
+   * @throws TRADENotAuthorizedException if the service's container refuses this container
+   * @throws TRADEException if the call fails otherwise
+   */
+  public void setServiceGroups(TRADEServiceInfo service, Collection<String> groups)
+      throws TRADEException {
+    Objects.requireNonNull(service, "service == null");
+    checkOpen();
+    ServiceDescriptor d = service.descriptor();
+    List<String> g = new ArrayList<>(normalize(groups));
+    if (d.containerId().equals(core.containerId())) {
+      if (d.groups().contains(dev.trade.internal.system.SystemGroup.NAME)) {
+        throw new TRADERegistrationException("setServiceGroups: " + d.signature() + " is a system"
+            + " service; its groups are fixed");
+      }
+      core.setGroups(d.serviceId(), g);
+    } else {
+      core.admin().call(core.settings().principal(), d.containerId(), "setServiceGroups",
+          void.class, d.serviceId(), g);
+    }
+  }
+
+  /**
+   * Adds {@code groups} to the groups of {@code service}; see
+   * {@link #setServiceGroups(TRADEServiceInfo, Collection)}.
+   *
+   * @param service the service; not null
+   * @param groups the groups to add
+   * @throws TRADEException as {@link #setServiceGroups(TRADEServiceInfo, Collection)}
+   */
+  public void addServiceGroups(TRADEServiceInfo service, Collection<String> groups)
+      throws TRADEException {
+    Set<String> g = new LinkedHashSet<>(current(service));
+    g.addAll(normalize(groups));
+    setServiceGroups(service, g);
+  }
+
+  /**
+   * Removes {@code groups} from the groups of {@code service}; see
+   * {@link #setServiceGroups(TRADEServiceInfo, Collection)}.
+   *
+   * @param service the service; not null
+   * @param groups the groups to remove
+   * @throws TRADEException as {@link #setServiceGroups(TRADEServiceInfo, Collection)}
+   */
+  public void removeServiceGroups(TRADEServiceInfo service, Collection<String> groups)
+      throws TRADEException {
+    Set<String> g = new LinkedHashSet<>(current(service));
+    g.removeAll(normalize(groups));
+    setServiceGroups(service, g);
+  }
+
+  /**
+   * Removes every group of {@code service}: it is in no group afterwards. See
+   * {@link #setServiceGroups(TRADEServiceInfo, Collection)}.
+   *
+   * @param service the service; not null
+   * @throws TRADEException as {@link #setServiceGroups(TRADEServiceInfo, Collection)}
+   */
+  public void resetServiceGroups(TRADEServiceInfo service) throws TRADEException {
+    setServiceGroups(service, List.of());
+  }
+
+  /** The groups of {@code service} as this container knows them now (the newest description). */
+  private Set<String> current(TRADEServiceInfo service) {
+    Objects.requireNonNull(service, "service == null");
+    Entry e = core.registry().entry(service.descriptor());
+    return (e == null ? service.descriptor() : e.descriptor()).groups();
+  }
+
+  private <T> T admin(String credentials, String name, Class<T> returnType, Object... args)
+      throws TRADEException {
+    checkOpen();
+    return core.admin().call(credentials, core.containerId(), name, returnType, args);
   }
 
   /**

@@ -10,6 +10,7 @@ import dev.trade.TRADENotAuthorizedException;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
+import java.io.InputStream;
 import java.io.Serializable;
 import java.lang.annotation.Annotation;
 import java.net.InetAddress;
@@ -17,6 +18,7 @@ import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
 import java.util.UUID;
+import java.util.Map;
 
 /**
  * User code written against TRADE 1.1.1's public API (docs/api.md, "Differences from TRADE 1.1.1";
@@ -201,50 +203,50 @@ public class Trade111Api {
     }
   }
 
+  /** The middleware's own operations, with credentials (#39). */
+  void middleware(String credentials, InputStream inputStream, TRADEServiceInfo s) {
+    try { TRADE.reset(credentials); } catch (TRADEException e) { report(e); }
+    try { TRADE.loadConfig(credentials, inputStream); } catch (TRADEException e) { report(e); }
+    try { TRADE.accessToTRADEServices(credentials, true); } catch (TRADEException e) { report(e); }
+    try { TRADE.findInterfaces(credentials); } catch (TRADEException e) { report(e); }
+    try { TRADE.setEncryption(credentials, true); } catch (TRADEException e) { report(e); }
+    try { TRADE.shutdownTRADE(credentials); } catch (TRADEException e) { report(e); }
+    try { TRADE.setBroadcast(credentials, true); } catch (TRADEException e) { report(e); }
+    try { TRADE.setDiscovery(credentials, true); } catch (TRADEException e) { report(e); }
+    try { Map<String, Collection<String>> graph = TRADE.getTRADEContainerGraph(credentials); }
+    catch (TRADEException e) { report(e); }
+    try { TRADE.startListenForConnections(credentials, "127.0.0.1", 10002); }
+    catch (TRADEException e) { report(e); }
+    try { TRADE.stopListenForConnections(credentials); } catch (TRADEException e) { report(e); }
+    try { TRADE.setServiceGroups(s, List.of("a")); } catch (TRADEException e) { report(e); }
+    try { TRADE.addServiceGroups(s, List.of("a")); } catch (TRADEException e) { report(e); }
+    try { TRADE.removeServiceGroups(s, List.of("a")); } catch (TRADEException e) { report(e); }
+    try { TRADE.resetServiceGroups(s); } catch (TRADEException e) { report(e); }
+  }
+
   private static void report(Exception e) {
     e.printStackTrace();
+  }
+
+  /** Notifications with TRADE 1.1.1's exact parameter and return types. */
+  void notifications(Object listener, Object argument, List<TRADEServiceInfo> services,
+      TRADEServiceConstraints c) {
+    try { TRADE.requestNotification(listener, "once", argument, services, "done"); }
+    catch (TRADEException e) { report(e); }
+    try { TRADE.cancelNotification(listener, "every", argument); }
+    catch (TRADEException e) { report(e); }
+    try { Collection<TRADEServiceInfo> now =
+        TRADE.registerNotificationNowOrWhenJoined(listener, c, "joined"); }
+    catch (TRADEException e) { report(e); }
   }
 
   /*
    * TRADE 1.1.1 members not in this version yet, each with the issue that adds it. Uncomment a
    * block when its issue lands.
    *
-   * Notifications with TRADE 1.1.1's exact parameter and return types (#36):
-   *
-   *   void notifications(Object listener, Object argument, List<TRADEServiceInfo> services,
-   *       TRADEServiceConstraints c) {
-   *     try { TRADE.requestNotification(listener, "once", argument, services, "done"); }
-   *     catch (TRADEException e) { report(e); }
-   *     try { TRADE.cancelNotification(listener, "every", argument); }
-   *     catch (TRADEException e) { report(e); }
-   *     try { Collection<TRADEServiceInfo> now =
-   *         TRADE.registerNotificationNowOrWhenJoined(listener, c, "joined"); }
-   *     catch (TRADEException e) { report(e); }
-   *   }
-   *
    * Hooks (#37):
    *
    *   try { TRADE.beforeService(wrapper, target); } catch (TRADEException e) { report(e); }
    *   try { TRADE.afterService(wrapper, target); } catch (TRADEException e) { report(e); }
-   *
-   * The middleware's own operations, with credentials (#39):
-   *
-   *   try { TRADE.reset(credentials); } catch (TRADEException e) { report(e); }
-   *   try { TRADE.loadConfig(credentials, inputStream); } catch (TRADEException e) { report(e); }
-   *   try { TRADE.accessToTRADEServices(credentials, true); } catch (TRADEException e) { report(e); }
-   *   try { TRADE.findInterfaces(credentials); } catch (TRADEException e) { report(e); }
-   *   try { TRADE.setEncryption(credentials, true); } catch (TRADEException e) { report(e); }
-   *   try { TRADE.shutdownTRADE(credentials); } catch (TRADEException e) { report(e); }
-   *   try { TRADE.setBroadcast(credentials, true); } catch (TRADEException e) { report(e); }
-   *   try { TRADE.setDiscovery(credentials, true); } catch (TRADEException e) { report(e); }
-   *   try { Map<String, Collection<String>> graph = TRADE.getTRADEContainerGraph(credentials); }
-   *   catch (TRADEException e) { report(e); }
-   *   try { TRADE.startListenForConnections(credentials, "127.0.0.1", 10002); }
-   *   catch (TRADEException e) { report(e); }
-   *   try { TRADE.stopListenForConnections(credentials); } catch (TRADEException e) { report(e); }
-   *   try { TRADE.setServiceGroups(s, List.of("a")); } catch (TRADEException e) { report(e); }
-   *   try { TRADE.addServiceGroups(s, List.of("a")); } catch (TRADEException e) { report(e); }
-   *   try { TRADE.removeServiceGroups(s, List.of("a")); } catch (TRADEException e) { report(e); }
-   *   try { TRADE.resetServiceGroups(s); } catch (TRADEException e) { report(e); }
    */
 }

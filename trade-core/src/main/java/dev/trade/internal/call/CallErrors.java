@@ -3,6 +3,7 @@ package dev.trade.internal.call;
 import dev.trade.TRADEBadArgumentsException;
 import dev.trade.TRADEInvocationException;
 import dev.trade.TRADELockedException;
+import dev.trade.TRADENotAuthorizedException;
 import dev.trade.TRADEServiceUnavailableException;
 import dev.trade.TRADETimeoutException;
 import dev.trade.internal.registry.ServiceDescriptor;
@@ -60,6 +61,15 @@ public final class CallErrors {
   public static TRADEInvocationException threw(ServiceDescriptor d, Throwable t) {
     return new TRADEInvocationException("Service " + d.signature() + " threw "
         + t.getClass().getName() + (t.getMessage() == null ? "" : ": " + t.getMessage()), t);
+  }
+
+  /**
+   * The providing container's access control refused the call: {@code missing} says what the
+   * caller lacked (a role, a valid or fresh proof), never a secret.
+   */
+  public static TRADENotAuthorizedException notAuthorized(ServiceDescriptor d, String missing) {
+    return new TRADENotAuthorizedException("Not authorized: " + d.signature() + " of container "
+        + d.containerName() + " needs " + missing);
   }
 
   /** A number of arguments that does not match the service's parameters. */

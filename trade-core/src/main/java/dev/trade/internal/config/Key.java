@@ -41,7 +41,10 @@ enum Key {
   DISCOVERYINTERFACES("", ValueType.INTERFACES),
   DISCOVERYCLOCKSKEW("30000", ValueType.MILLIS_OR_ZERO),
   SERIALIZATIONALLOWLIST("", ValueType.ALLOW_LIST),
-  MAXFRAMESIZE("67108864", ValueType.FRAME_SIZE);
+  MAXFRAMESIZE("67108864", ValueType.FRAME_SIZE),
+  PRINCIPALSFILE("", ValueType.TEXT),
+  PRINCIPAL("", ValueType.TEXT),
+  PROVIDERCLASSES("", ValueType.ALLOW_LIST);
 
   /** Keys TRADE used to read that are accepted and ignored, so that old files still load. */
   static final Set<String> LEGACY = Set.of("RUNWEBSERVER");
@@ -80,8 +83,8 @@ enum Key {
   /**
    * Parses {@code text} for this key; the text is trimmed, and empty text means the default.
    *
-   * @throws IllegalArgumentException "KEY=value: expected ...". The value of CREDENTIALS is
-   *     shown as {@code ****} because messages end up in logs.
+   * @throws IllegalArgumentException "KEY=value: expected ...". The values of CREDENTIALS and
+   *     PRINCIPAL are shown as {@code ****} because messages end up in logs.
    */
   Object parse(String text) {
     String s = text.trim();
@@ -91,9 +94,14 @@ enum Key {
     try {
       return type.parse(s);
     } catch (IllegalArgumentException e) {
-      String shown = this == CREDENTIALS ? "****" : s;
+      String shown = isSecret() ? "****" : s;
       throw new IllegalArgumentException(name() + "=" + shown + ": " + e.getMessage());
     }
+  }
+
+  /** Whether the value holds a secret: never shown in messages or {@code Settings.toString()}. */
+  boolean isSecret() {
+    return this == CREDENTIALS || this == PRINCIPAL;
   }
 
   /** The canonical text for a value of this key; {@link #parse} accepts it again. */

@@ -328,6 +328,25 @@ public final class Settings {
     return (Integer) values.get(Key.MAXFRAMESIZE);
   }
 
+  /** PRINCIPALSFILE: the access file (principals, roles, secrets, rules); empty for none. */
+  public String principalsFile() {
+    return (String) values.get(Key.PRINCIPALSFILE);
+  }
+
+  /**
+   * PRINCIPAL: the credentials ({@code <principal>:<secret>}) this container proves on the calls it
+   * makes; empty for anonymous. Never log it; use toString().
+   */
+  public String principal() {
+    return (String) values.get(Key.PRINCIPAL);
+  }
+
+  /** PROVIDERCLASSES: the classes a remote administrator may start providers of. Unmodifiable. */
+  @SuppressWarnings("unchecked") // Key.PROVIDERCLASSES always parses to a List<String>
+  public List<String> providerClasses() {
+    return (List<String>) values.get(Key.PROVIDERCLASSES);
+  }
+
   /**
    * Every key with its canonical text, in canonical order (TRADE's keys, then ours). The texts
    * load back into equal settings. CREDENTIALS appears in clear: do not log this map.
@@ -351,11 +370,11 @@ public final class Settings {
     return values.hashCode();
   }
 
-  /** {@code Settings{CONTAINERNAME=, ..., CREDENTIALS=****, ...}}: safe to log. */
+  /** {@code Settings{CONTAINERNAME=, ..., CREDENTIALS=****, ...}}: safe to log (PRINCIPAL too). */
   @Override
   public String toString() {
     StringJoiner joiner = new StringJoiner(", ", "Settings{", "}");
-    values.forEach((k, v) -> joiner.add(k + "=" + (k == Key.CREDENTIALS ? "****" : k.format(v))));
+    values.forEach((k, v) -> joiner.add(k + "=" + (k.isSecret() ? "****" : k.format(v))));
     return joiner.toString();
   }
 

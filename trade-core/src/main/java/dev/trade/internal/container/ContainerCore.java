@@ -30,19 +30,28 @@ import dev.trade.internal.registry.Query;
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
 import dev.trade.internal.system.SystemGroup;
+import dev.trade.internal.admin.Access;
+import dev.trade.internal.admin.AdminClient;
+import dev.trade.internal.admin.AdminService;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.lang.System.Logger;
 import java.lang.System.Logger.Level;
 import java.net.InetSocketAddress;
+import java.util.ArrayList;
 import java.util.Collection;
+import java.util.Collections;
+import java.util.IdentityHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
+import java.util.TreeMap;
 import java.util.UUID;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Function;
 
@@ -81,6 +90,11 @@ public final class ContainerCore implements ServiceCaller {
   private final Notifications notifications;
   private final NotificationClient notificationClient;
   private final Locks locks;
+  private final Access access;
+  private final AdminClient adminClient;
+  /** The container's own providers (in the reserved group), which reset() leaves alone. */
+  private final Set<Object> systemProviders =
+      Collections.synchronizedSet(Collections.newSetFromMap(new IdentityHashMap<>()));
   /** Runs local asynchronous calls and decodes remote replies of asynchronous calls; lazily made. */
   private ExecutorService asyncPool; // Guarded by this.
 
@@ -109,9 +123,12 @@ public final class ContainerCore implements ServiceCaller {
     this.codec = new Codec(allowList, limits, infos);
     this.copier = settings.copyDataForLocalInvokes() ? codec::copy : null;
     this.defaultTimeoutNanos = settings.callTimeout().toNanos();
+    this.access = Access.of(settings, id, name, registry);
     this.locks = new Locks(registry, this, infos, settings.failureTimeout(), settings.callTimeout(),
         name);
-    this.hostChain = new CallChain(hostLinks(locks.link()), new LocalInvoker(registry));
+    this.hostChain = new CallChain(hostLinks(access.link(), locks.link()),
+        new LocalInvoker(registry));
+    this.adminClient = new AdminClient(registry, access, this::callWith);
     this.remote = new RemoteCaller(allowList, () -> network);
     this.self = Caller.of(uuid);
     this.notifications = new Notifications(registry, this, infos, constraints, name);
@@ -135,8 +152,10 @@ public final class ContainerCore implements ServiceCaller {
     try {
       registerSystem(new NotificationService(notifications, infos));
       locks.registered(registerSystem(locks.service()));
+      registerSystem(new AdminService(new Administered(), access, settings.providerClasses(),
+          System.currentTimeMillis()));
     } catch (TRADEException e) {
-      throw new IllegalStateException("a system service cannot be registered", e);
+      throw new IllegalStateException("the system services cannot be registered", e);
     }
     if (networked(settings)) {
       network = startNetwork();
@@ -195,7 +214,22 @@ public final class ContainerCore implements ServiceCaller {
 
   /** Registers one of the container's own providers in the reserved group. */
   private List<LocalService> registerSystem(Object provider) throws TRADEException {
+    systemProviders.add(provider);
     return registry.register(provider, Set.of(SystemGroup.NAME));
+  }
+
+  /** The client of the middleware services (the static API's administrative methods). */
+  public AdminClient admin() {
+    return adminClient;
+  }
+
+  /**
+   * Gives this container's service {@code serviceId} the groups {@code groups}; see
+   * {@link Registry#setGroups}.
+   */
+  public void setGroups(long serviceId, Collection<String> groups) throws TRADEException {
+    SystemGroup.refuse(groups);
+    registry.setGroups(serviceId, groups);
   }
 
   /** The requester's side of notifications (the static API's client of the notification services). */
@@ -211,6 +245,23 @@ public final class ContainerCore implements ServiceCaller {
   /** See {@link Registry#deregister}. */
   public void deregister(Object provider) throws TRADEServiceNotFoundException {
     registry.deregister(provider);
+    systemProviders.remove(provider);
+  }
+
+  /** Deregisters every provider users registered here; returns how many. */
+  public int reset() {
+    int n = 0;
+    for (Object p : registry.providers()) {
+      if (!systemProviders.contains(p)) {
+        try {
+          registry.deregister(p);
+          n++;
+        } catch (TRADEServiceNotFoundException e) {
+          // Deregistered meanwhile: gone either way.
+        }
+      }
+    }
+    return n;
   }
 
   /** This container's networking, started now if it was not running. */
@@ -312,9 +363,19 @@ public final class ContainerCore implements ServiceCaller {
       throws TRADEException {
     Object[] normalized = Arguments.normalize(d, args);
     long timeout = timeoutNanos > 0 ? timeoutNanos : defaultTimeoutNanos;
+    CallContext context = access.ownContext(d);
     return d.containerId().equals(id)
-        ? callLocal(d, returnType, normalized, timeout, CallContext.EMPTY)
-        : remote.call(d, returnType, normalized, CallContext.EMPTY, timeout);
+        ? callLocal(d, returnType, normalized, timeout, context)
+        : remote.call(d, returnType, normalized, context, timeout);
+  }
+
+  /** As {@link #call}, with {@code context} (a proof of other credentials) and the default timeout. */
+  private <T> T callWith(ServiceDescriptor d, Class<T> returnType, Object[] args,
+      CallContext context) throws TRADEException {
+    Object[] normalized = Arguments.normalize(d, args);
+    return d.containerId().equals(id)
+        ? callLocal(d, returnType, normalized, defaultTimeoutNanos, context)
+        : remote.call(d, returnType, normalized, context, defaultTimeoutNanos);
   }
 
   /**
@@ -326,10 +387,24 @@ public final class ContainerCore implements ServiceCaller {
       Class<T> returnType, Object[] args, long timeoutNanos) throws TRADEException {
     Object[] normalized = Arguments.normalize(d, args);
     long timeout = timeoutNanos > 0 ? timeoutNanos : defaultTimeoutNanos;
-    CallContext context = locks.client().context(d, lock, waitForLock);
+    CallContext context =
+        merged(access.ownContext(d), locks.client().context(d, lock, waitForLock));
     return d.containerId().equals(id)
         ? callLocal(d, returnType, normalized, timeout, context)
         : remote.call(d, returnType, normalized, context, timeout);
+  }
+
+  /** The entries of both contexts (their keys are the middleware's own, and never shared). */
+  private static CallContext merged(CallContext a, CallContext b) {
+    if (a.isEmpty()) {
+      return b;
+    }
+    if (b.isEmpty()) {
+      return a;
+    }
+    Map<String, String> all = new TreeMap<>(a.entries());
+    all.putAll(b.entries());
+    return CallContext.of(all);
   }
 
   /**
@@ -345,16 +420,17 @@ public final class ContainerCore implements ServiceCaller {
     try {
       Object[] normalized = Arguments.normalize(d, args);
       long timeout = timeoutNanos > 0 ? timeoutNanos : defaultTimeoutNanos;
+      CallContext context = access.ownContext(d);
       if (d.containerId().equals(id)) {
         return CompletableFuture.supplyAsync(() -> {
           try {
-            return callLocal(d, returnType, normalized, timeout, CallContext.EMPTY);
+            return callLocal(d, returnType, normalized, timeout, context);
           } catch (TRADEException e) {
             throw new CompletionException(e);
           }
         }, asyncPool());
       }
-      return remote.callAsync(d, returnType, normalized, CallContext.EMPTY, timeout, asyncPool());
+      return remote.callAsync(d, returnType, normalized, context, timeout, asyncPool());
     } catch (TRADEException e) {
       return CompletableFuture.failedFuture(e);
     }
@@ -377,8 +453,8 @@ public final class ContainerCore implements ServiceCaller {
    * fill it in this order: {@code access → locks → hooks → invoke} (access control first, so that
    * nothing else sees a refused call; hooks last, so that they see only calls that will run).
    */
-  private static List<CallLink> hostLinks(CallLink locks) {
-    return List.of(locks); // access and hooks come with their features
+  private static List<CallLink> hostLinks(CallLink access, CallLink locks) {
+    return List.of(access, locks); // hooks come with their feature
   }
 
   private <T> T callLocal(ServiceDescriptor d, Class<T> returnType, Object[] args, long timeout,
@@ -404,6 +480,131 @@ public final class ContainerCore implements ServiceCaller {
     return Returns.convert(d, returnType,
         copier.copy(result, RemoteCaller.callerLoader(returnType), s.declaredTypes()));
   }
+
+  /** What the administration service acts on: this container. */
+  private final class Administered implements AdminService.Container {
+    @Override
+    public String id() {
+      return id;
+    }
+
+    @Override
+    public String name() {
+      return name;
+    }
+
+    @Override
+    public String host() {
+      return host;
+    }
+
+    @Override
+    public void setDiscovery(boolean on) {
+      ContainerCore.this.setDiscovery(on);
+    }
+
+    @Override
+    public void setBroadcast(boolean on) {
+      ContainerCore.this.setBroadcast(on);
+    }
+
+    @Override
+    public boolean isDiscovering() {
+      return ContainerCore.this.isDiscovering();
+    }
+
+    @Override
+    public boolean isBroadcasting() {
+      return ContainerCore.this.isBroadcasting();
+    }
+
+    @Override
+    public boolean usesEncryption() {
+      return settings.useEncryption();
+    }
+
+    @Override
+    public InetSocketAddress listen(InetSocketAddress address) throws IOException {
+      return network().listen(address);
+    }
+
+    @Override
+    public List<InetSocketAddress> stopListening() {
+      Network n = network;
+      return n == null ? List.of() : n.stopListening();
+    }
+
+    @Override
+    public List<InetSocketAddress> listenAddresses() {
+      return ContainerCore.this.listenAddresses();
+    }
+
+    @Override
+    public List<InetSocketAddress> announceable() {
+      Network n = network;
+      return n == null ? List.of() : n.announceable();
+    }
+
+    @Override
+    public void connect(InetSocketAddress address) {
+      network().connect(address);
+    }
+
+    @Override
+    public boolean disconnect(UUID container) {
+      Network n = network;
+      return n != null && n.disconnect(container);
+    }
+
+    @Override
+    public List<String> neighbours() {
+      return ContainerCore.this.neighbours();
+    }
+
+    @Override
+    public List<LocalService> services() {
+      List<LocalService> result = new ArrayList<>();
+      for (Object p : registry.providers()) {
+        List<LocalService> s = registry.servicesOf(p);
+        if (s != null) {
+          result.addAll(s);
+        }
+      }
+      return result;
+    }
+
+    @Override
+    public List<LocalService> register(Object provider, Set<String> groups)
+        throws TRADEException {
+      return ContainerCore.this.register(provider, groups);
+    }
+
+    @Override
+    public void deregister(Object provider) throws TRADEException {
+      ContainerCore.this.deregister(provider);
+    }
+
+    @Override
+    public int reset() {
+      return ContainerCore.this.reset();
+    }
+
+    @Override
+    public void setGroups(long serviceId, Set<String> groups) throws TRADEException {
+      ContainerCore.this.setGroups(serviceId, groups);
+    }
+
+    @Override
+    public void shutdownSoon() {
+      // After the reply: it leaves when this call returns, and a container that closed first
+      // would answer its caller with a lost link instead.
+      CompletableFuture.runAsync(ContainerCore.this::close,
+          CompletableFuture.delayedExecutor(SHUTDOWN_DELAY_MS, TimeUnit.MILLISECONDS));
+    }
+  }
+
+  /** How long after replying a container shut down by its middleware service closes. */
+  static final long SHUTDOWN_DELAY_MS = 200;
 
   /** Deregisters everything and stops; idempotent. */
   public void close() {

@@ -1,5 +1,6 @@
 package dev.trade.internal.lock;
 
+import dev.trade.TRADEAccess;
 import dev.trade.TRADEBadArgumentsException;
 import dev.trade.TRADEException;
 import dev.trade.TRADENotAuthorizedException;
@@ -30,7 +31,12 @@ import java.util.function.LongSupplier;
  * provide and call them.
  *
  * <p>Public only because services must be; the module does not export it. Safe for concurrent use.
+ *
+ * <p>Open to every caller ({@link TRADEAccess#ANYONE}), although it is in the reserved group: every
+ * container takes locks on its users' behalf, without credentials; the service itself refuses a
+ * release by a container that does not own the lock, and the owner is always the calling container.
  */
+@TRADEAccess(TRADEAccess.ANYONE)
 public final class LockService {
   private final LeaseTable table;
   private final Registry registry;

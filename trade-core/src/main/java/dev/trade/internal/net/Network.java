@@ -185,6 +185,14 @@ public final class Network implements AutoCloseable {
     return connector.listening();
   }
 
+  /**
+   * The addresses this container would announce now: those it listens on, a wildcard expanded to
+   * the addresses of the interfaces that are up now.
+   */
+  public List<InetSocketAddress> announceable() {
+    return connector.announceable();
+  }
+
   /** Ids of the containers this one has a direct link to. */
   public List<String> neighbours() {
     return links.keySet().stream().map(UUID::toString).toList();
@@ -202,8 +210,39 @@ public final class Network implements AutoCloseable {
     return dialled.size();
   }
 
-  void connect(InetSocketAddress address) { // for tests: discovery dials through its finder
+  /** Dials {@code address} once (an administrator's connect; discovery dials through its finder). */
+  public void connect(InetSocketAddress address) {
     connector.connectOnce(address);
+  }
+
+  /**
+   * Accepts connections on {@code address} too (port 0: any free port).
+   *
+   * @return the address bound
+   * @throws IOException if it cannot be bound
+   */
+  public InetSocketAddress listen(InetSocketAddress address) throws IOException {
+    return connector.listen(address);
+  }
+
+  /** Stops accepting connections; links already made stay. Returns the addresses it closed. */
+  public List<InetSocketAddress> stopListening() {
+    return connector.stopListening();
+  }
+
+  /**
+   * Closes the direct link to {@code container}, if there is one (with a goodbye, so it is not
+   * taken for a failure); the container stays reachable over other links if there are any.
+   *
+   * @return whether there was a link
+   */
+  public boolean disconnect(UUID container) {
+    Link link = links.get(container);
+    if (link == null) {
+      return false;
+    }
+    link.leave();
+    return true;
   }
 
   /**

@@ -1,5 +1,6 @@
 package dev.trade.internal.notify;
 
+import dev.trade.TRADEAccess;
 import dev.trade.TRADEBadArgumentsException;
 import dev.trade.TRADEException;
 import dev.trade.TRADEInvocationException;
@@ -206,7 +207,11 @@ public final class NotificationClient {
     }
   }
 
-  /** The listener of {@link #waitFor}: a service, as every callback, in the reserved group. */
+  /**
+   * The listener of {@link #waitFor}: a service, as every callback, in the reserved group, open to
+   * the notification engine's calls (which prove no principal).
+   */
+  @TRADEAccess(TRADEAccess.ANYONE)
   public static final class Waiter {
     final CompletableFuture<TRADEServiceInfo> first = new CompletableFuture<>();
 

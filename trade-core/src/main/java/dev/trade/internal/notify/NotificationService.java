@@ -1,5 +1,6 @@
 package dev.trade.internal.notify;
 
+import dev.trade.TRADEAccess;
 import dev.trade.TRADEException;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceInfo;
@@ -17,8 +18,12 @@ import java.util.Objects;
  * locally or remotely. Its methods, their parameter and return types, are specified in
  * docs/notifications.md so that other implementations can provide and call them.
  *
+ * <p>Open to every caller ({@link TRADEAccess#ANYONE}), although it is in the reserved group: every
+ * container requests notifications of others on its users' behalf, without credentials.
+ *
  * <p>Public only because services must be; the module does not export it. Safe for concurrent use.
  */
+@TRADEAccess(TRADEAccess.ANYONE)
 public final class NotificationService {
   private final Notifications engine;
   private final InfoBinding infos;

@@ -28,6 +28,14 @@ public final class LocalService {
     this.declaredTypes = DeclaredTypes.of(method);
   }
 
+  /**
+   * This service with another descriptor (its groups changed): same provider, method and handle,
+   * active; this one stays as it is for the calls that hold it.
+   */
+  LocalService withDescriptor(ServiceDescriptor changed) {
+    return new LocalService(changed, target, method, invoker);
+  }
+
   public ServiceDescriptor descriptor() {
     return descriptor;
   }

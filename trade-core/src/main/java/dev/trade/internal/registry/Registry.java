@@ -124,6 +124,45 @@ public final class Registry {
     return services;
   }
 
+  /**
+   * Gives the local service {@code serviceId} the groups {@code groups}, in their order: its id
+   * stays, so that handles to it keep working; lookups everywhere see the change (replicated as a
+   * delta that removes the old description and adds the new one; listeners see it left and joined).
+   *
+   * @return the new descriptor
+   * @throws TRADEServiceNotFoundException if no such service is registered here
+   */
+  public synchronized ServiceDescriptor setGroups(long serviceId, Collection<String> groups)
+      throws TRADEServiceNotFoundException {
+    LocalService old = localById.get(serviceId);
+    if (old == null) {
+      throw new TRADEServiceNotFoundException("Service " + serviceId + " is not registered in"
+          + " container " + containerName + "; look the service up again");
+    }
+    ServiceDescriptor o = old.descriptor();
+    ServiceDescriptor d = new ServiceDescriptor(o.containerId(), o.containerName(), o.host(),
+        o.serviceId(), o.name(), o.parameterNames(), o.parameterTypeNames(), o.returnTypeName(),
+        new LinkedHashSet<>(groups), o.annotations(), o.genericReturnTypeName(),
+        o.exceptionTypeNames(), o.parameterAnnotations());
+    LocalService s = old.withDescriptor(d);
+    localById = localById.with(s);
+    for (List<LocalService> list : byProvider.values()) {
+      list.replaceAll(x -> x == old ? s : x);
+    }
+    Map<Long, Entry> own = tables.get(containerId);
+    Entry removed = own.get(serviceId);
+    Entry added = new Entry(d, 0, s);
+    own.put(serviceId, added);
+    localVersion++;
+    publish(List.of(added), removed == null ? List.of() : List.of(removed));
+    return d;
+  }
+
+  /** Every provider registered here, in no particular order: a snapshot. */
+  public synchronized List<Object> providers() {
+    return new ArrayList<>(byProvider.keySet());
+  }
+
   /** The services of {@code provider} registered here, or null when it is not registered. */
   public synchronized List<LocalService> servicesOf(Object provider) {
     List<LocalService> services = byProvider.get(provider);
@@ -267,18 +306,19 @@ public final class Registry {
     }
     versions.put(owner, version);
     Map<Long, Entry> table = tables.computeIfAbsent(owner, k -> new LinkedHashMap<>());
-    List<Entry> added = new ArrayList<>();
-    for (ServiceDescriptor d : add) {
-      Entry e = new Entry(d, distance, null);
-      table.put(d.serviceId(), e);
-      added.add(e);
-    }
+    // Removals first: a service whose groups changed is removed and added with the same id.
     List<Entry> removed = new ArrayList<>();
     for (Long id : remove) {
       Entry e = table.remove(id);
       if (e != null) {
         removed.add(e);
       }
+    }
+    List<Entry> added = new ArrayList<>();
+    for (ServiceDescriptor d : add) {
+      Entry e = new Entry(d, distance, null);
+      table.put(d.serviceId(), e);
+      added.add(e);
     }
     publish(added, removed);
     return DeltaResult.APPLIED;

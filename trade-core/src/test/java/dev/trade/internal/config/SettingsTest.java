@@ -90,7 +90,7 @@ class SettingsTest {
         "COPYDATAFORLOCALINVOKES", "KEEPTRYING", "NETWORKINTERFACE", "CALLTIMEOUT",
         "HEARTBEATINTERVAL", "FAILURETIMEOUT",
         "DISCOVERYRANGE", "DISCOVERYINTERFACES", "DISCOVERYCLOCKSKEW", "SERIALIZATIONALLOWLIST",
-        "MAXFRAMESIZE"), List.copyOf(map.keySet()));
+        "MAXFRAMESIZE", "PRINCIPALSFILE", "PRINCIPAL", "PROVIDERCLASSES"), List.copyOf(map.keySet()));
     assertEquals("33333", map.get("BROADCASTPORT"));
     assertEquals("", map.get("SERVERIPS"));
     assertEquals("localhost", map.get("DISCOVERYRANGE"));
@@ -237,8 +237,11 @@ class SettingsTest {
     assertFalse(text.contains("hunter2"), text);
     assertTrue(text.startsWith("Settings{CONTAINERNAME=, STARTDISCOVERY=false,"), text);
     assertTrue(text.contains(", CREDENTIALS=****, TRADESYSID=diarc,"), text);
-    assertTrue(text.endsWith(", MAXFRAMESIZE=67108864}"), text);
+    assertTrue(text.endsWith(", MAXFRAMESIZE=67108864, PRINCIPALSFILE=, PRINCIPAL=****,"
+        + " PROVIDERCLASSES=}"), text);
     assertEquals("hunter2", Settings.defaults().with("CREDENTIALS", "hunter2").credentials());
+    String principal = Settings.defaults().with("PRINCIPAL", "alice:hunter3").toString();
+    assertFalse(principal.contains("hunter3"), principal);
   }
 
   @Test

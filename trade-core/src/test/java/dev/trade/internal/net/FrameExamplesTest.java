@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trade.TRADEService;
+import dev.trade.internal.admin.Proofs;
 import dev.trade.internal.call.Arguments;
 import dev.trade.internal.call.CallContext;
 import dev.trade.internal.codec.AllowList;
@@ -200,6 +201,38 @@ class FrameExamplesTest {
   @Test
   void callWithContextExample() throws Exception {
     assertDocumented("call-context", callFrameWithContext());
+  }
+
+  /** The call of {@link #callFrame()} with alice's proof (docs/protocol.md, "Proof of a principal"). */
+  private static byte[] callFrameWithProof() throws Exception {
+    Registry registry = new Registry(ARM.toString(), "arm", "robot1");
+    ServiceDescriptor d = registry.register(new RobotArm(), List.of()).get(0).descriptor();
+    RemoteCalls hub = new RemoteCalls(HUB, codec(), null, null, null, 1 << 26);
+    String proof = Proofs.sign("alice", Proofs.key("alice", "alice-secret-1"), HUB.toString(),
+        ARM.toString(), d.serviceId(), 1_700_000_000_000L, "000102030405060708090a0b0c0d0e0f");
+    return hub.callFrame(ARM, 1, d.serviceId(), 30_000, Arguments.normalize(d, new Object[] {3}),
+        CallContext.of(Map.of(Proofs.KEY, proof)));
+  }
+
+  @Test
+  void callWithProofExample() throws Exception {
+    assertDocumented("auth-proof-key", Proofs.key("alice", "alice-secret-1"));
+    assertDocumented("call-auth", callFrameWithProof());
+  }
+
+  /** The proof recipe of the document, computed with the JDK's Mac. */
+  @Test
+  void proofRecipeOfTheDocumentIsWhatTheCodeComputes() throws Exception {
+    Mac mac = Mac.getInstance("HmacSHA256");
+    mac.init(new SecretKeySpec("alice-secret-1".getBytes(StandardCharsets.UTF_8), "HmacSHA256"));
+    byte[] key = mac.doFinal("trade.auth.key.1\nalice".getBytes(StandardCharsets.UTF_8));
+    mac.init(new SecretKeySpec(key, "HmacSHA256"));
+    String nonce = "000102030405060708090a0b0c0d0e0f";
+    byte[] expected = mac.doFinal(("trade.auth.1\nalice\n" + HUB + "\n" + ARM + "\n1\n"
+        + "1700000000000\n" + nonce).getBytes(StandardCharsets.UTF_8));
+    assertEquals("1 alice 1700000000000 " + nonce + " " + HexFormat.of().formatHex(expected),
+        Proofs.sign("alice", Proofs.key("alice", "alice-secret-1"), HUB.toString(),
+            ARM.toString(), 1, 1_700_000_000_000L, nonce));
   }
 
   @Test

@@ -110,6 +110,25 @@ public final class Connector {
     return bound;
   }
 
+  /**
+   * Stops accepting connections: closes every listening socket (links already made stay).
+   *
+   * @return the addresses it listened on
+   */
+  public List<InetSocketAddress> stopListening() {
+    List<InetSocketAddress> stopped = new ArrayList<>();
+    for (ServerSocket s : servers) {
+      stopped.add((InetSocketAddress) s.getLocalSocketAddress());
+      servers.remove(s);
+      try {
+        s.close(); // its accept loop ends on the SocketException
+      } catch (IOException ignored) {
+        // Closed either way.
+      }
+    }
+    return stopped;
+  }
+
   /** The addresses we listen on, wildcards as they are (see {@link #announceable}). */
   public List<InetSocketAddress> listening() {
     List<InetSocketAddress> result = new ArrayList<>();

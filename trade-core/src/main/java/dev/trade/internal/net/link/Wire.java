@@ -36,6 +36,8 @@ public final class Wire {
   public static final int FAILED_TIMEOUT = 5;
   public static final int FAILED_OTHER = 6;
   public static final int FAILED_LOCKED = 7;
+  /** The provider's access control refused the call (docs/protocol.md, "Proof of a principal"). */
+  public static final int FAILED_NOT_AUTHORIZED = 8;
 
   // REFUSE reasons.
   static final int REFUSE_VERSION = 1;

@@ -4,6 +4,7 @@ import dev.trade.TRADEBadArgumentsException;
 import dev.trade.TRADEException;
 import dev.trade.TRADEInvocationException;
 import dev.trade.TRADELockedException;
+import dev.trade.TRADENotAuthorizedException;
 import dev.trade.TRADESerializationException;
 import dev.trade.TRADEServiceUnavailableException;
 import dev.trade.TRADETimeoutException;
@@ -127,6 +128,8 @@ final class CallServer {
       replies.reply(from, payload, Wire.FAILED_TIMEOUT, e.getMessage());
     } catch (TRADELockedException e) {
       replies.reply(from, payload, Wire.FAILED_LOCKED, e.getMessage());
+    } catch (TRADENotAuthorizedException e) {
+      replies.reply(from, payload, Wire.FAILED_NOT_AUTHORIZED, e.getMessage());
     } catch (TRADEException | RuntimeException e) {
       replies.reply(from, payload, Wire.FAILED_OTHER, String.valueOf(e.getMessage()));
     }

@@ -4,6 +4,7 @@ import dev.trade.TRADEBadArgumentsException;
 import dev.trade.TRADEException;
 import dev.trade.TRADEInvocationException;
 import dev.trade.TRADELockedException;
+import dev.trade.TRADENotAuthorizedException;
 import dev.trade.TRADESerializationException;
 import dev.trade.TRADEServiceUnavailableException;
 import dev.trade.TRADETimeoutException;
@@ -320,6 +321,8 @@ public final class RemoteCalls {
         throw new TRADETimeoutException(in.readText(MAX_TEXT));
       case Wire.FAILED_LOCKED:
         throw new TRADELockedException(in.readText(MAX_TEXT));
+      case Wire.FAILED_NOT_AUTHORIZED:
+        throw new TRADENotAuthorizedException(in.readText(MAX_TEXT));
       default:
         throw new TRADEException(in.readText(MAX_TEXT));
     }
