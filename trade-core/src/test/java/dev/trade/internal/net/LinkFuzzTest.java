@@ -173,15 +173,19 @@ class LinkFuzzTest {
         caller.awaitMore(20);
         Await.until(GENEROUS, () -> threads() <= threadsBefore + 2,
             "the threads to come back to " + threadsBefore + " (+2)");
+        long heapAfterRun = usedHeapAfterGc();
+        // The victim keeps the state of each container that left for a minute (Replication's
+        // grace): tens of thousands of fuzzing peers then weigh some MB, which must go.
+        Await.until(Duration.ofSeconds(180), () -> usedHeapAfterGc() < heapBefore + (8 << 20),
+            "the heap to come back within 8 MB of " + (heapBefore >> 10) + " KiB");
         long heapAfter = usedHeapAfterGc();
         findings.report(String.format("handshake inputs=%d in %.0f s; frame inputs=%s in %.0f s;"
-            + " bystander calls=%d, failed=0; heap %d -> %d KiB, threads %d -> %d",
+            + " bystander calls=%d, failed=0; heap %d -> %d KiB right after, %d KiB settled; threads %d -> %d",
             handshakes, handshakeSeconds, frameFigures, frameSeconds, caller.successes() - served,
-            heapBefore >> 10, heapAfter >> 10, threadsBefore,
+            heapBefore >> 10, heapAfterRun >> 10, heapAfter >> 10, threadsBefore,
             threads()));
         findings.assertNone();
         caller.assertNoFailures();
-        assertTrue(heapAfter < heapBefore + (32 << 20), "heap grew from " + heapBefore + " to " + heapAfter);
       } finally {
         logger.removeHandler(watch);
         logger.setUseParentHandlers(true);
@@ -373,9 +377,7 @@ class LinkFuzzTest {
 
   private static long usedHeapAfterGc() {
     Runtime r = Runtime.getRuntime();
-    for (int i = 0; i < 3; i++) {
-      System.gc();
-    }
+    System.gc();
     return r.totalMemory() - r.freeMemory();
   }
 }
