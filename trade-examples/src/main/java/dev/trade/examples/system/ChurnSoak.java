@@ -93,6 +93,7 @@ public final class ChurnSoak {
       try (TRADEContainer warmup = build("warmup")) {
         callNewcomer(caller, "warmup");
       }
+      newcomersCalled.set(0);
       long start = System.nanoTime();
       Sample before = sample(0, caller);
       java.util.Set<String> threadsBefore = threadNames();
