@@ -15,8 +15,10 @@ import java.util.Deque;
 import java.util.List;
 import java.util.Locale;
 import java.util.UUID;
+import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ThreadLocalRandom;
 import java.util.concurrent.TimeUnit;
@@ -56,6 +58,8 @@ public final class ChurnSoak {
       return name + " answers " + caller;
     }
   }
+
+  private record Newcomer(TRADEContainer container, Future<?> check) {}
 
   private record Sample(double seconds, double heapMb, int threads, long fds, int listed) {}
 
@@ -97,23 +101,30 @@ public final class ChurnSoak {
       long start = System.nanoTime();
       Sample before = sample(0, caller);
       java.util.Set<String> threadsBefore = threadNames();
-      ScheduledExecutorService ticks = Executors.newScheduledThreadPool(2);
+      ScheduledExecutorService ticks = Executors.newScheduledThreadPool(2); // the steady caller and the ticks
       ExecutorService checks = Executors.newSingleThreadExecutor();
-      Deque<TRADEContainer> newcomers = new ArrayDeque<>();
+      Deque<Newcomer> newcomers = new ArrayDeque<>();
       long[] joined = {0};
       ticks.scheduleAtFixedRate(() -> callSteadily(echo), 0, 10, TimeUnit.MILLISECONDS);
       ticks.scheduleAtFixedRate(() -> {
         try {
           String name = "n" + ++joined[0];
           TRADEContainer c = build(name);
+          Future<?> check = checks.submit(() -> callNewcomer(caller, name));
+          Newcomer oldest = null;
           synchronized (newcomers) {
-            newcomers.addLast(c);
+            newcomers.addLast(new Newcomer(c, check));
             if (newcomers.size() > LIVE) {
-              newcomers.removeFirst().close();
+              oldest = newcomers.removeFirst();
             }
           }
-          checks.execute(() -> callNewcomer(caller, name));
-        } catch (RuntimeException | TRADEException e) {
+          if (oldest != null) {
+            // It leaves once it was called: on a slow machine the tick runs late rather than a
+            // newcomer leaving before it was found, which would count as a failed call.
+            oldest.check.get();
+            oldest.container.close();
+          }
+        } catch (RuntimeException | TRADEException | InterruptedException | ExecutionException e) {
           fail("newcomer " + joined[0] + " not started: " + e);
         }
       }, 1, 1, TimeUnit.SECONDS);
@@ -134,7 +145,7 @@ public final class ChurnSoak {
       checks.shutdown();
       checks.awaitTermination(60, TimeUnit.SECONDS);
       synchronized (newcomers) {
-        newcomers.forEach(TRADEContainer::close);
+        newcomers.forEach(n -> n.container.close());
         newcomers.clear();
       }
       boolean back = awaitQuietly(() -> threads() <= before.threads + 2 && fds() <= before.fds + 4);
