@@ -47,7 +47,8 @@ def summary(passed, failed):
     print("%d passed, %d failed" % (passed, failed), flush=True)
 
 
-def main():
+def main(scenario_class=Scenario, name="multi-host"):
+    """Runs scenario_class's steps on hosts A, B and C (also the entry point of partition.py)."""
     if os.environ.get(IN_PRIVATE_MOUNTS) != "1":
         reason = unavailable_reason()
         if reason:
@@ -63,7 +64,7 @@ def main():
         # Signals are passed on, so that the test cleans up after itself.
         env = dict(os.environ, **{IN_PRIVATE_MOUNTS: "1"})
         child = subprocess.Popen(["unshare", "--mount", "--propagation", "private",
-                                  sys.executable, os.path.abspath(__file__)] + sys.argv[1:], env=env)
+                                  sys.executable, os.path.abspath(sys.argv[0])] + sys.argv[1:], env=env)
         for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
             signal.signal(sig, lambda signum, frame: child.send_signal(signum))
         return child.wait()
@@ -86,10 +87,10 @@ def main():
             summary(0, 1)
             return 1
 
-    log_dir = os.path.join(ROOT, "target", "system-tests", "multihost-%d-%d" % (int(time.time()), os.getpid()))
+    log_dir = os.path.join(ROOT, "target", "system-tests", "%s-%d-%d" % (name.replace("-", ""), int(time.time()), os.getpid()))
     os.makedirs(log_dir)
-    print("multi-host system test: hosts A, B, C in network namespaces trade-%d-{A,B,C}; logs in %s"
-          % (os.getpid(), log_dir), flush=True)
+    print("%s system test: hosts A, B, C in network namespaces trade-%d-{A,B,C}; logs in %s"
+          % (name, os.getpid(), log_dir), flush=True)
 
     def terminate(signum, frame):
         # Once: a second signal must not interrupt the cleanup.
@@ -99,7 +100,7 @@ def main():
     for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
         signal.signal(sig, terminate)
 
-    scenario = Scenario(log_dir)
+    scenario = scenario_class(log_dir)
     t0 = time.time()
     try:
         scenario.run()
@@ -110,7 +111,7 @@ def main():
         scenario.cleanup()
     passed = sum(1 for _, ok, _ in scenario.results if ok)
     failed = len(scenario.results) - passed
-    print("multi-host system test took %.1f s" % (time.time() - t0), flush=True)
+    print("%s system test took %.1f s" % (name, time.time() - t0), flush=True)
     if failed == 0 and os.environ.get("TRADE_SYSTEM_TEST_KEEP_LOGS") != "1":
         shutil.rmtree(log_dir, ignore_errors=True)
     else:

@@ -62,6 +62,15 @@ def describe_left(delays):
     return "; ".join(parts)
 
 
+def call(node, group, expect_answer):
+    """Has node call group; returns the call's ms, or raises unless it answered expect_answer."""
+    node.send("call " + group)
+    line = node.expect(r"^CALL(ED|-FAILED) " + group + " ", STEP_S)
+    if not re.search(r"^CALLED " + group + " -> " + re.escape(expect_answer) + r" in \d+ ms", line.text):
+        raise StepFailure("%s: %s" % (node.host, line.text))
+    return re.search(r"in (\d+) ms", line.text).group(1)
+
+
 class Scenario:
     def __init__(self, log_dir):
         self.topology = Topology()
@@ -89,9 +98,7 @@ class Scenario:
         A, B, C = self.nodes["A"], self.nodes["B"], self.nodes["C"]
 
         def topology():
-            self.topology.build()
-            self.topology.check_isolation()
-            return "A 10.200.1.1 | C 10.200.1.3 + 10.200.2.3 | B 10.200.2.2; no route A<->B"
+            return self.build_topology()
 
         def discovery():
             t0 = time.time()
@@ -108,22 +115,8 @@ class Scenario:
                 "%s %.2f" % (h, times[h]) for h in "ABC")
 
         def links():
-            expected = {"A": {C.id}, "B": {C.id}, "C": {A.id, B.id}}
-            for n in (A, B, C):
-                n.send("neighbours")
-                line = n.expect(r"^NEIGHBOURS ", STEP_S)
-                got = set(filter(None, line.text.split(" ")[1].split(",")))
-                if got != expected[n.host]:
-                    raise StepFailure("%s's direct links are %s, expected %s" % (
-                        n.host, self.names(got), self.names(expected[n.host])))
+            self.check_links()
             return "A-C and C-B only: A and B have no direct link"
-
-        def call(node, group, expect_answer):
-            node.send("call " + group)
-            line = node.expect(r"^CALL(ED|-FAILED) " + group + " ", STEP_S)
-            if not re.search(r"^CALLED " + group + " -> " + re.escape(expect_answer) + r" in \d+ ms", line.text):
-                raise StepFailure("%s: %s" % (node.host, line.text))
-            return re.search(r"in (\d+) ms", line.text).group(1)
 
         def forwarding():
             ab = call(A, "host-B", "B on [10.200.2.2]")
@@ -252,17 +245,7 @@ class Scenario:
                 ", ".join(calls))
 
         def shutdown():
-            # One after the other; each one's goodbye makes the others print LEFT for it at once.
-            delays = []
-            for n, rest in ((A, (B, C)), (B, (C,)), (C, ())):
-                t0 = time.time()
-                n.send("quit")
-                n.expect(r"^BYE ", STEP_S)
-                status = n.wait_exit(STEP_S)
-                if status != 0:
-                    raise StepFailure("%s exited with status %d" % (n.host, status))
-                for other in rest:
-                    delays.append(other.expect(left(n.host), STEP_S).stamp - t0)
+            delays = self.shut_down_in_turn()
             return "A, B and C quit in turn; the others saw each leave within %.0f ms; all exited with status 0" % (
                 max(delays) * 1000)
 
@@ -303,6 +286,39 @@ class Scenario:
         self.step("C wakes up (SIGCONT): services rejoin, calls work", woken)
         self.step("clean shutdown", shutdown)
         self.step("no spurious joined/left events", nothing_else)
+
+    def build_topology(self):
+        self.topology.build()
+        self.topology.check_isolation()
+        return "A 10.200.1.1 | C 10.200.1.3 + 10.200.2.3 | B 10.200.2.2; no route A<->B"
+
+    def check_links(self):
+        """A's and B's only direct link is to C, and C's are to A and B, once each."""
+        A, B, C = self.nodes["A"], self.nodes["B"], self.nodes["C"]
+        expected = {"A": {C.id}, "B": {C.id}, "C": {A.id, B.id}}
+        for n in (A, B, C):
+            n.send("neighbours")
+            line = n.expect(r"^NEIGHBOURS ", STEP_S)
+            got = list(filter(None, line.text.split(" ")[1].split(",")))
+            if len(got) != len(set(got)) or set(got) != expected[n.host]:
+                raise StepFailure("%s's direct links are %s, expected %s" % (
+                    n.host, self.names(got), self.names(expected[n.host])))
+
+    def shut_down_in_turn(self):
+        """A, B and C quit one after the other; each one's goodbye makes the others print LEFT
+        for it at once. Returns those delays (s)."""
+        A, B, C = self.nodes["A"], self.nodes["B"], self.nodes["C"]
+        delays = []
+        for n, rest in ((A, (B, C)), (B, (C,)), (C, ())):
+            t0 = time.time()
+            n.send("quit")
+            n.expect(r"^BYE ", STEP_S)
+            status = n.wait_exit(STEP_S)
+            if status != 0:
+                raise StepFailure("%s exited with status %d" % (n.host, status))
+            for other in rest:
+                delays.append(other.expect(left(n.host), STEP_S).stamp - t0)
+        return delays
 
     def names(self, ids):
         by_id = {n.id: n.host for n in self.nodes.values()}

@@ -13,6 +13,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
 import org.example.jvm.RemoteTypes.ArmJammedException;
 import org.example.jvm.RemoteTypes.Gripper;
 import org.example.jvm.RemoteTypes.Plan;
@@ -75,6 +76,9 @@ public final class ProviderMain {
 
   /** The provided services: echoes for every value kind, failures, a callback and a slow call. */
   public static final class Services {
+    /** How many times {@link #mix} ran: a call run twice would count twice. */
+    private final AtomicLong mixed = new AtomicLong();
+
     @TRADEService
     public Object echo(Object value) {
       return value;
@@ -219,6 +223,19 @@ public final class ProviderMain {
           throw (RuntimeException) Class.forName(kind).getConstructor(String.class)
               .newInstance("thrown by " + kind);
       }
+    }
+
+    /** A reply that only a run with {@code x} can give: {@code x:hex(scramble(x))}. */
+    @TRADEService
+    public String mix(long x) {
+      mixed.incrementAndGet();
+      return x + ":" + Long.toHexString(ConcurrentCallersTest.scramble(x));
+    }
+
+    /** How many times {@link #mix} has run. */
+    @TRADEService
+    public long mixed() {
+      return mixed.get();
     }
 
     /**

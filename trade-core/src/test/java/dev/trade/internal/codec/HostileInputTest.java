@@ -37,8 +37,8 @@ class HostileInputTest {
 
   private static final int ALL_TAGS_MASK = 0xFF;
 
-  /** Valid encodings of values of every kind, to truncate and mutate. */
-  private List<byte[]> samples() throws Exception {
+  /** Valid encodings of values of every kind, to truncate and mutate (also by {@link ValueFuzzTest}). */
+  static List<byte[]> samples(Codec codec) throws Exception {
     ArrayDeque<Object> deque = new ArrayDeque<>(List.of("a", 1));
     Object[] values = {
       null, true, (byte) 1, (short) 2, 3, 4L, 5f, 6d, 'c', "text ☃",
@@ -49,7 +49,8 @@ class HostileInputTest {
       new IllegalStateException("bad", new java.io.IOException("io")),
       new FakeInfo(TestTypes.descriptor(ServiceInfoCodingTest.Annotated.class
           .getMethod("moveTo", double.class, double.class).getAnnotations())),
-      new BigDecimal("-3.14159"), UUID.randomUUID(), Instant.now(), java.time.Duration.ZERO,
+      new BigDecimal("-3.14159"), UUID.fromString("00112233-4455-6677-8899-aabbccddeeff"),
+      Instant.ofEpochSecond(1_700_000_000L, 123_456_789), java.time.Duration.ZERO,
       String.class, new Legacy("java"), deque, Map.of(List.of(1), new Holder(null)),
     };
     List<byte[]> samples = new ArrayList<>();
@@ -82,7 +83,7 @@ class HostileInputTest {
   @Test
   void everyTruncationOfValidEncodingsIsMalformed() throws Exception {
     int count = 0;
-    for (byte[] sample : samples()) {
+    for (byte[] sample : samples(codec)) {
       for (int length = 0; length < sample.length; length++) {
         assertMalformed(codec, Arrays.copyOf(sample, length));
         count++;
@@ -119,7 +120,7 @@ class HostileInputTest {
   @Test
   void randomlyMutatedValidEncodingsFailCleanly() throws Exception {
     Random random = new Random(42);
-    List<byte[]> samples = samples();
+    List<byte[]> samples = samples(codec);
     for (int i = 0; i < 20_000; i++) {
       byte[] bytes = samples.get(random.nextInt(samples.size())).clone();
       if (bytes.length == 0) {
