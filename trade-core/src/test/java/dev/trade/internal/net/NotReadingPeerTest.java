@@ -77,9 +77,10 @@ class NotReadingPeerTest {
   void aMemberWhoseReplicationFramesPileUpUnappliedIsCutOff() throws Exception {
     try (LogCapture log = new LogCapture();
         TRADEContainer provider = accepting("flooded")
-            // Small frames, so that the limit is its floor, 16 MiB; not the smallest setting (1 KiB),
-            // which the container's own table (its system services among it) does not fit.
-            .property("MAXFRAMESIZE", "4096").property("FAILURETIMEOUT", "60000").build()) {
+            // Frames small enough that the limit is its floor, 16 MiB; not the smallest settings
+            // (1 or 4 KiB), which the container's own table (its system services among it) does
+            // not fit.
+            .property("MAXFRAMESIZE", "65536").property("FAILURETIMEOUT", "60000").build()) {
       provider.registerAllServices(new Probe());
       try (RawPeer sink = RawPeer.connect(provider)) {
         sink.handshake("flooder");
