@@ -29,6 +29,7 @@ import dev.trade.internal.registry.Query;
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
 import dev.trade.internal.system.SystemGroup;
+import dev.trade.internal.time.Scheduler;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.lang.System.Logger;
@@ -74,6 +75,8 @@ public final class ContainerCore implements ServiceCaller {
   private final ValueCopier copier;
   private final long defaultTimeoutNanos;
   private final Limits limits;
+  /** The one clock and timer of this container, handed to networking and notifications. */
+  private final Scheduler scheduler;
   // Written once under this' lock; networking may start later, when discovery is switched on.
   private volatile Network network;
   private volatile boolean closed;
@@ -110,7 +113,8 @@ public final class ContainerCore implements ServiceCaller {
     this.hostChain = new CallChain(hostLinks(), new LocalInvoker(registry));
     this.remote = new RemoteCaller(allowList, () -> network);
     this.self = Caller.of(uuid);
-    this.notifications = new Notifications(registry, this, infos, constraints, name);
+    this.scheduler = Scheduler.system(name);
+    this.notifications = new Notifications(registry, this, infos, constraints, scheduler, name);
     this.notificationClient = new NotificationClient(registry, this, infos,
         new NotificationClient.Registrar() {
           @Override
@@ -134,7 +138,12 @@ public final class ContainerCore implements ServiceCaller {
       throw new IllegalStateException("the notification service cannot be registered", e);
     }
     if (networked(settings)) {
-      network = startNetwork();
+      try {
+        network = startNetwork();
+      } catch (RuntimeException e) {
+        scheduler.close();
+        throw e;
+      }
     }
   }
 
@@ -155,7 +164,7 @@ public final class ContainerCore implements ServiceCaller {
       public Object invoke(Invocation call) throws TRADEException {
         return hostChain.call(call);
       }
-    });
+    }, scheduler);
     try {
       n.start();
     } catch (IOException e) {
@@ -396,6 +405,7 @@ public final class ContainerCore implements ServiceCaller {
           asyncPool.shutdownNow();
         }
       }
+      scheduler.close(); // last: networking's goodbyes may still be timed on it
     }
   }
 }

@@ -18,6 +18,7 @@ import dev.trade.internal.net.link.ReplyWait;
 import dev.trade.internal.net.link.ServedCalls;
 import dev.trade.internal.net.link.Wire;
 import dev.trade.internal.registry.ServiceDescriptor;
+import dev.trade.internal.time.Scheduler;
 import java.io.IOException;
 import java.lang.System.Logger.Level;
 import java.lang.System.Logger;
@@ -30,7 +31,6 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Executor;
 import java.util.concurrent.RejectedExecutionException;
-import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Predicate;
@@ -89,19 +89,22 @@ public final class RemoteCalls {
   private final Map<String, UUID> containerIds = new ConcurrentHashMap<>();
   private final ReplyWait replyWait = new ReplyWait();
   private final Deadlines deadlines;
-  private final ScheduledExecutorService timer;
+  private final Scheduler scheduler;
 
-  /** @param maxFrame the largest frame (after its length field) that peers accept: MAXFRAMESIZE */
-  public RemoteCalls(UUID self, Codec codec, Router router, Provider host,
-      ScheduledExecutorService timer, int maxFrame) {
+  /**
+   * @param scheduler the container's clock and timer (deadlines, waits for routes to settle)
+   * @param maxFrame the largest frame (after its length field) that peers accept: MAXFRAMESIZE
+   */
+  public RemoteCalls(UUID self, Codec codec, Router router, Provider host, Scheduler scheduler,
+      int maxFrame) {
     this.self = self;
     this.codec = codec;
     this.router = router;
-    this.replies = new ReplySender(self, router, timer, maxFrame);
+    this.replies = new ReplySender(self, router, scheduler, maxFrame);
     this.serving = new CallServer(self, codec, host, replies, maxFrame);
     this.maxFrame = maxFrame;
-    this.deadlines = new Deadlines(timer, pending);
-    this.timer = timer;
+    this.deadlines = new Deadlines(scheduler, pending);
+    this.scheduler = scheduler;
   }
 
   /** Calls a service of another container and waits for its reply until the deadline. */
@@ -376,8 +379,8 @@ public final class RemoteCalls {
       // out; it waits for routes to settle instead, as a reply does (ReplySender#deliver), and the
       // wait counts against its timeout.
       try {
-        timer.schedule(() -> forward(from, type, payload, destination, waits + 1), 10 << waits,
-            TimeUnit.MILLISECONDS);
+        scheduler.timer().schedule(() -> forward(from, type, payload, destination, waits + 1),
+            10 << waits, TimeUnit.MILLISECONDS);
         return;
       } catch (RejectedExecutionException closing) {
         // Passed back below, or failed.

@@ -4,13 +4,13 @@ import dev.trade.internal.codec.ByteSink;
 import dev.trade.internal.net.link.Frames;
 import dev.trade.internal.net.link.Link;
 import dev.trade.internal.net.link.Wire;
+import dev.trade.internal.time.Scheduler;
 import java.io.IOException;
 import java.lang.System.Logger.Level;
 import java.lang.System.Logger;
 import java.util.Arrays;
 import java.util.UUID;
 import java.util.concurrent.RejectedExecutionException;
-import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 
 /**
@@ -26,14 +26,14 @@ public final class ReplySender {
 
   private final UUID self;
   private final RemoteCalls.Router router;
-  private final ScheduledExecutorService timer;
+  private final Scheduler scheduler;
   private final int maxFrame;
 
   /** @param maxFrame the largest frame (after its length field) that peers accept: MAXFRAMESIZE */
-  public ReplySender(UUID self, RemoteCalls.Router router, ScheduledExecutorService timer, int maxFrame) {
+  public ReplySender(UUID self, RemoteCalls.Router router, Scheduler scheduler, int maxFrame) {
     this.self = self;
     this.router = router;
-    this.timer = timer;
+    this.scheduler = scheduler;
     this.maxFrame = maxFrame;
   }
 
@@ -139,7 +139,8 @@ public final class ReplySender {
       return;
     }
     try {
-      timer.schedule(() -> deliver(caller, frame, attempt + 1), 10L << attempt, TimeUnit.MILLISECONDS);
+      scheduler.timer().schedule(() -> deliver(caller, frame, attempt + 1), 10L << attempt,
+          TimeUnit.MILLISECONDS);
     } catch (RejectedExecutionException closing) {
       // The container is closing; its callers fail on their own.
     }
