@@ -46,8 +46,8 @@ class ReplyWayBackTest {
     InputStream[] atRoute = new InputStream[1];
     Link cameBy = loopback.link(UUID.randomUUID(), "came-by", atCameBy);
     Link route = loopback.link(UUID.randomUUID(), "route", atRoute);
-    ReplySender replies = new ReplySender(self, container -> container.equals(caller) ? route : null, timer,
-        1 << 20);
+    RemoteCalls replies = new RemoteCalls(self, null,
+        container -> container.equals(caller) ? route : null, null, timer, 1 << 20);
     byte[] call = call();
     byte[] frame = Frames.finish(replies.replyStart(call, Wire.OK));
 
