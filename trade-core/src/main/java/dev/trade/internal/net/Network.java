@@ -8,7 +8,7 @@ import dev.trade.internal.call.Provider;
 import dev.trade.internal.codec.Codec;
 import dev.trade.internal.config.PeerAddress;
 import dev.trade.internal.config.Settings;
-import dev.trade.internal.net.join.DiscoveryController;
+import dev.trade.internal.net.join.Finder;
 import dev.trade.internal.net.link.Connector;
 import dev.trade.internal.net.link.Handshake;
 import dev.trade.internal.net.link.Heartbeat;
@@ -66,7 +66,7 @@ public final class Network implements AutoCloseable {
   private final Replication replication;
   private final ReadWatch readWatch;
   private final FrameDispatcher dispatch;
-  private final DiscoveryController discovery;
+  private final Finder discovery;
   private final LinkReferee swaps;
   private final Heartbeat heartbeat;
   private final Map<UUID, Link> links = new ConcurrentHashMap<>();
@@ -143,8 +143,8 @@ public final class Network implements AutoCloseable {
             });
           }
         });
-    this.discovery = new DiscoveryController(settings, self, name, connector, this::linkedOrLinking,
-        replication::reachable, timer, () -> closed);
+    this.discovery = new Finder(settings, self, name, connector, this::linkedOrLinking,
+        replication::reachable, scheduler, () -> closed);
     this.heartbeat = new Heartbeat(live, settings.heartbeatInterval(), settings.failureTimeout(),
         scheduler, workers);
     registry.addListener(
@@ -170,12 +170,12 @@ public final class Network implements AutoCloseable {
     }
     heartbeat.start();
     if (settings.startDiscovery() || settings.startBroadcast()) {
-      discovery.finder(settings.startBroadcast(), settings.startDiscovery());
+      discovery.start(settings.startBroadcast(), settings.startDiscovery());
     }
   }
 
   /** Announcing, discovery and listening, and their switches. */
-  public DiscoveryController discovery() {
+  public Finder discovery() {
     return discovery;
   }
 
