@@ -7,6 +7,7 @@ import dev.trade.TRADEContainer;
 import dev.trade.TRADEException;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
+import dev.trade.testing.Hubs;
 import java.time.Duration;
 import java.util.List;
 import java.util.Map;
@@ -26,8 +27,7 @@ class PaperNotificationTest {
 
   @Test
   void whenLowBatteryDockAcrossThreeJvms() throws Exception {
-    try (TRADEContainer a = TRADEContainer.builder().name("planner")
-        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build()) {
+    try (TRADEContainer a = Hubs.hubBuilder("planner").build()) {
       String hub = "CONNECTCONTAINERS=" + a.getServerAddresses().get(0);
       try (JvmProcess b = JvmProcess.start(RobotPartMain.class, List.of(), "battery",
               "CONTAINERNAME=battery", hub);
