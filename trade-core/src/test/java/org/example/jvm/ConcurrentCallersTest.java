@@ -9,6 +9,7 @@ import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
 import java.time.Duration;
@@ -81,8 +82,7 @@ class ConcurrentCallersTest {
 
   @BeforeEach
   void link() throws Exception {
-    provider = TRADEContainer.builder().name("provider")
-        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build();
+    provider = Hubs.hubBuilder("provider").build();
     provider.registerAllServices(mixer, "mixer");
     // A lost reply fails its call after 20 s instead of hanging the test.
     caller = TRADEContainer.builder().name("caller").property("CALLTIMEOUT", "20000")

@@ -11,6 +11,7 @@ import dev.trade.TRADEServiceInfo;
 import dev.trade.TRADEServiceUnavailableException;
 import dev.trade.TRADETimeoutException;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.net.InetSocketAddress;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -48,9 +49,8 @@ class CongestedLinkTest {
 
   /** A provider of {@code sha256} in group "far", behind a proxy that takes nothing when paused. */
   private TRADEContainer provider() throws TRADEException {
-    TRADEContainer provider = TRADEContainer.builder().name("far-provider")
-        .property("FAILURETIMEOUT", "30000")
-        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build();
+    TRADEContainer provider = Hubs.hubBuilder("far-provider")
+        .property("FAILURETIMEOUT", "30000").build();
     provider.registerAllServices(digest, "far");
     return provider;
   }
@@ -149,12 +149,9 @@ class CongestedLinkTest {
   void aForwarderAnswersNotAvailableNowWhenTheLinkOnwardHasNoRoom() throws Exception {
     try (TRADEContainer provider = provider();
         ThrottlingProxy proxy = new ThrottlingProxy(address(provider), 0);
-        TRADEContainer hub = TRADEContainer.builder().name("hub")
-            .property("FAILURETIMEOUT", "30000")
-            .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
+        TRADEContainer hub = Hubs.hubBuilder("hub").property("FAILURETIMEOUT", "30000")
             .property("CONNECTCONTAINERS", proxy.address()).build();
-        TRADEContainer caller = TRADEContainer.builder().name("caller")
-            .property("CONNECTCONTAINERS", hub.getServerAddresses().get(0)).build()) {
+        TRADEContainer caller = Hubs.spokeBuilder("caller", hub).build()) {
       hub.registerAllServices(new SlowLinkTest.Digest(), "hub");
       TRADEServiceInfo near = await(caller, "hub").withTimeout(Duration.ofSeconds(2));
       TRADEServiceInfo far = await(caller, "far").withTimeout(Duration.ofSeconds(5));

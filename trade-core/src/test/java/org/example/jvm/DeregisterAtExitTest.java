@@ -7,6 +7,7 @@ import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.CountDownLatch;
@@ -38,8 +39,7 @@ class DeregisterAtExitTest {
   void aComponentsShutdownHookDeregistersThroughTheStaticMethods() throws Exception {
     Watcher watcher = new Watcher();
     TRADEServiceConstraints lamp = new TRADEServiceConstraints().name("lampOn");
-    try (TRADEContainer peer = TRADEContainer.builder().name("peer")
-        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build()) {
+    try (TRADEContainer peer = Hubs.hubBuilder("peer").build()) {
       peer.registerAllServices(watcher); // its service tells the component that the link is up
       peer.requestNotification(watcher, "left", lamp, null, "left");
       try (JvmProcess component = JvmProcess.start(ShutdownHookMain.class, List.of(),

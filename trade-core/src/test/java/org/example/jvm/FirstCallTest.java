@@ -6,6 +6,7 @@ import dev.trade.TRADEContainer;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.time.Duration;
 import org.junit.jupiter.api.Test;
 
@@ -28,8 +29,7 @@ class FirstCallTest {
   @Test
   void firstCallOnEachNewLinkIsAnswered() throws Exception {
     for (int i = 0; i < 20; i++) {
-      try (TRADEContainer provider = TRADEContainer.builder().name("first-provider-" + i)
-          .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build()) {
+      try (TRADEContainer provider = Hubs.hubBuilder("first-provider-" + i).build()) {
         provider.registerAllServices(new Ping());
         // A lost reply shows as a timeout after 5 s rather than after the default 30 s.
         try (TRADEContainer caller = TRADEContainer.builder().name("first-caller-" + i)

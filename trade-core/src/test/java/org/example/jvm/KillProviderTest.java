@@ -10,6 +10,7 @@ import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
 import dev.trade.TRADEServiceUnavailableException;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
@@ -51,9 +52,8 @@ class KillProviderTest {
 
   @Test
   void killedProviderThatDialledIn() throws Exception {
-    try (TRADEContainer caller = TRADEContainer.builder().name("caller")
-        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
-        .property("FAILURETIMEOUT", "60000").build();
+    try (TRADEContainer caller = Hubs.hubBuilder("caller").property("FAILURETIMEOUT", "60000")
+        .build();
         JvmProcess provider = ProviderMain.launch(List.of(), "CONTAINERNAME=victim",
             "CONNECTCONTAINERS=" + caller.getServerAddresses().get(0))) {
       provider.awaitLine("READY ", START);

@@ -11,6 +11,7 @@ import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.time.Duration;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;
@@ -59,8 +60,7 @@ class OversizedCallTest {
 
   @BeforeEach
   void link() throws Exception {
-    provider = TRADEContainer.builder().name("provider").property("MAXFRAMESIZE", "" + MAX_FRAME)
-        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build();
+    provider = Hubs.hubBuilder("provider").property("MAXFRAMESIZE", "" + MAX_FRAME).build();
     provider.registerAllServices(sizes, "sizes");
     caller = TRADEContainer.builder().name("caller").property("MAXFRAMESIZE", "" + MAX_FRAME)
         .property("CONNECTCONTAINERS", provider.getServerAddresses().get(0)).build();

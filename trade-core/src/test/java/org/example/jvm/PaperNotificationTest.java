@@ -10,6 +10,7 @@ import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
 import dev.trade.TRADEServiceUnavailableException;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.time.Duration;
 import java.util.List;
 import java.util.Map;
@@ -28,8 +29,7 @@ class PaperNotificationTest {
 
   @Test
   void whenLowBatteryDockAcrossThreeJvms() throws Exception {
-    try (TRADEContainer a = TRADEContainer.builder().name("planner")
-        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build()) {
+    try (TRADEContainer a = Hubs.hubBuilder("planner").build()) {
       String hub = "CONNECTCONTAINERS=" + a.getServerAddresses().get(0);
       try (JvmProcess b = JvmProcess.start(RobotPartMain.class, List.of(), "battery",
               "CONTAINERNAME=battery", hub);

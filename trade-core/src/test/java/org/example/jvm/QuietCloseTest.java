@@ -6,6 +6,7 @@ import dev.trade.TRADEContainer;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -35,10 +36,8 @@ class QuietCloseTest {
       for (int i = 0; i < 10; i++) {
         String a = "quiet-a" + i;
         String b = "quiet-b" + i;
-        try (TRADEContainer provider = TRADEContainer.builder().name(a)
-            .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build();
-            TRADEContainer caller = TRADEContainer.builder().name(b)
-                .property("CONNECTCONTAINERS", provider.getServerAddresses().get(0)).build()) {
+        try (TRADEContainer provider = Hubs.hubBuilder(a).build();
+            TRADEContainer caller = Hubs.spokeBuilder(b, provider).build()) {
           provider.registerAllServices(new Ping());
           Await.until(WAIT, () -> !caller.getAvailableServices(new TRADEServiceConstraints().name("ping"))
               .isEmpty(), "the ping service");

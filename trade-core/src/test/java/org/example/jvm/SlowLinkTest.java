@@ -8,6 +8,7 @@ import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.net.InetSocketAddress;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -43,9 +44,8 @@ class SlowLinkTest {
    * {@code bytesPerSecond} towards the provider (replies unthrottled); returns its time in ms.
    */
   private static long overASlowLink(long bytesPerSecond, OverTheLink test) throws Exception {
-    try (TRADEContainer provider = TRADEContainer.builder().name("far-provider")
-        .property("HEARTBEATINTERVAL", "100").property("FAILURETIMEOUT", "800")
-        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build()) {
+    try (TRADEContainer provider = Hubs.hubBuilder("far-provider")
+        .property("HEARTBEATINTERVAL", "100").property("FAILURETIMEOUT", "800").build()) {
       provider.registerAllServices(new Digest());
       InetSocketAddress target = new InetSocketAddress("127.0.0.1",
           Integer.parseInt(provider.getServerAddresses().get(0).split("@")[1]));

@@ -6,6 +6,7 @@ import dev.trade.TRADEContainer;
 import dev.trade.TRADEException;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.time.Duration;
 import org.junit.jupiter.api.Test;
 
@@ -18,11 +19,9 @@ class ChainFormationTest {
   void aServiceVisibleAcrossAFreshChainIsCallableAtOnce() throws TRADEException {
     for (int i = 0; i < 30; i++) {
       try (TRADEContainer a = listening("A");
-          TRADEContainer b = TRADEContainer.builder().name("B")
-              .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
+          TRADEContainer b = Hubs.hubBuilder("B")
               .property("CONNECTCONTAINERS", a.getServerAddresses().get(0)).build();
-          TRADEContainer c = TRADEContainer.builder().name("C")
-              .property("CONNECTCONTAINERS", b.getServerAddresses().get(0)).build()) {
+          TRADEContainer c = Hubs.spokeBuilder("C", b).build()) {
         a.registerAllServices(new Named("A"), "gA");
         TRADEServiceConstraints k = new TRADEServiceConstraints().inGroups("gA");
         Await.until(Duration.ofSeconds(5), () -> !c.getAvailableServices(k).isEmpty(), "gA on C");
@@ -32,7 +31,6 @@ class ChainFormationTest {
   }
 
   private static TRADEContainer listening(String name) {
-    return TRADEContainer.builder().name(name).property("STARTACCEPTINGCONNECTIONS", "true")
-        .property("SERVERIPS", "127.0.0.1@0").build();
+    return Hubs.hubBuilder(name).build();
   }
 }

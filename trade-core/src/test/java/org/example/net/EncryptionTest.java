@@ -8,6 +8,7 @@ import dev.trade.TRADEException;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.time.Duration;
 import java.util.Random;
 import java.util.concurrent.CountDownLatch;
@@ -27,9 +28,7 @@ class EncryptionTest {
   }
 
   private static TRADEContainer hub(boolean encrypt) {
-    return TRADEContainer.builder().name("hub").property("STARTACCEPTINGCONNECTIONS", "true")
-        .property("SERVERIPS", "127.0.0.1@0").property("USEENCRYPTION", Boolean.toString(encrypt))
-        .build();
+    return Hubs.hubBuilder("hub").property("USEENCRYPTION", Boolean.toString(encrypt)).build();
   }
 
   @Test
@@ -70,8 +69,7 @@ class EncryptionTest {
     Logger log = Logger.getLogger("dev.trade.net");
     log.addHandler(h);
     try (TRADEContainer hub = hub(true);
-        TRADEContainer plain = TRADEContainer.builder().name("plain")
-            .property("CONNECTCONTAINERS", hub.getServerAddresses().get(0)).build()) {
+        TRADEContainer plain = Hubs.spokeBuilder("plain", hub).build()) {
       plain.registerAllServices(new Echo());
       assertTrue(refused.await(10, TimeUnit.SECONDS), "refusal logged");
       assertTrue(hub.getNeighbours().isEmpty());

@@ -10,6 +10,7 @@ import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
 import dev.trade.TRADEServiceUnavailableException;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
@@ -27,8 +28,7 @@ class ForwardingTest {
   }
 
   private TRADEContainer container(String name, String... connectTo) {
-    TRADEContainer c = TRADEContainer.builder().name(name)
-        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
+    TRADEContainer c = Hubs.hubBuilder(name)
         .property("CONNECTCONTAINERS", String.join(",", connectTo)).build();
     containers.add(c);
     return c;

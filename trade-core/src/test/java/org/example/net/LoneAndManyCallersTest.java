@@ -8,6 +8,7 @@ import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
@@ -44,8 +45,7 @@ class LoneAndManyCallersTest {
     }
   }
 
-  private final TRADEContainer a = TRADEContainer.builder().name("a").property("CALLTIMEOUT", "5000")
-      .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build();
+  private final TRADEContainer a = Hubs.hubBuilder("a").property("CALLTIMEOUT", "5000").build();
   private final TRADEContainer b = TRADEContainer.builder().name("b").property("CALLTIMEOUT", "5000")
       .property("CONNECTCONTAINERS", a.getServerAddresses().get(0)).build();
   private final ExecutorService threads = Executors.newCachedThreadPool();

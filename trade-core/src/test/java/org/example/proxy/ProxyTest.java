@@ -12,6 +12,7 @@ import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceNotFoundException;
 import dev.trade.UncheckedTRADEException;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
@@ -193,8 +194,7 @@ class ProxyTest {
   }
 
   private static TRADEContainer remote(String name) {
-    return TRADEContainer.builder().name(name).property("STARTACCEPTINGCONNECTIONS", "true")
-        .property("SERVERIPS", "127.0.0.1@0").build();
+    return Hubs.hubBuilder(name).build();
   }
 
   // Interfaces that cannot stand for services fail when the proxy is made, naming the method.

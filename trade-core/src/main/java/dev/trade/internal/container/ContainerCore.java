@@ -33,6 +33,7 @@ import dev.trade.internal.system.SystemGroup;
 import dev.trade.internal.admin.Access;
 import dev.trade.internal.admin.AdminClient;
 import dev.trade.internal.admin.AdminService;
+import dev.trade.internal.time.Scheduler;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.lang.System.Logger;
@@ -84,6 +85,8 @@ public final class ContainerCore implements ServiceCaller {
   private final ValueCopier copier;
   private final long defaultTimeoutNanos;
   private final Limits limits;
+  /** The one clock and timer of this container, handed to networking and notifications. */
+  private final Scheduler scheduler;
   // Written once under this' lock; networking may start later, when discovery is switched on.
   private volatile Network network;
   private volatile boolean closed;
@@ -131,7 +134,8 @@ public final class ContainerCore implements ServiceCaller {
     this.adminClient = new AdminClient(registry, access, this::callWith);
     this.remote = new RemoteCaller(allowList, () -> network);
     this.self = Caller.of(uuid);
-    this.notifications = new Notifications(registry, this, infos, constraints, name);
+    this.scheduler = Scheduler.system(name);
+    this.notifications = new Notifications(registry, this, infos, constraints, scheduler, name);
     this.notificationClient = new NotificationClient(registry, this, infos,
         new NotificationClient.Registrar() {
           @Override
@@ -158,7 +162,12 @@ public final class ContainerCore implements ServiceCaller {
       throw new IllegalStateException("the system services cannot be registered", e);
     }
     if (networked(settings)) {
-      network = startNetwork();
+      try {
+        network = startNetwork();
+      } catch (RuntimeException e) {
+        scheduler.close();
+        throw e;
+      }
     }
   }
 
@@ -179,7 +188,7 @@ public final class ContainerCore implements ServiceCaller {
       public Object invoke(Invocation call) throws TRADEException {
         return hostChain.call(call);
       }
-    });
+    }, scheduler);
     try {
       n.start();
     } catch (IOException e) {
@@ -623,6 +632,7 @@ public final class ContainerCore implements ServiceCaller {
           asyncPool.shutdownNow();
         }
       }
+      scheduler.close(); // last: networking's goodbyes may still be timed on it
     }
   }
 }

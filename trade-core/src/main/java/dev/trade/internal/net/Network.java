@@ -8,7 +8,7 @@ import dev.trade.internal.call.Provider;
 import dev.trade.internal.codec.Codec;
 import dev.trade.internal.config.PeerAddress;
 import dev.trade.internal.config.Settings;
-import dev.trade.internal.net.join.DiscoveryController;
+import dev.trade.internal.net.join.Finder;
 import dev.trade.internal.net.link.Connector;
 import dev.trade.internal.net.link.Handshake;
 import dev.trade.internal.net.link.Heartbeat;
@@ -19,6 +19,7 @@ import dev.trade.internal.net.mesh.Replication;
 import dev.trade.internal.net.remote.RemoteCalls;
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
+import dev.trade.internal.time.Scheduler;
 import java.io.IOException;
 import java.lang.System.Logger.Level;
 import java.lang.System.Logger;
@@ -36,6 +37,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 
@@ -55,6 +57,8 @@ public final class Network implements AutoCloseable {
   private final String name;
   private final Registry registry;
   private final ExecutorService control;
+  /** The container's; its timer is shared, so this cancels its own tasks and never shuts it. */
+  private final Scheduler scheduler;
   private final ScheduledExecutorService timer;
   private final ExecutorService workers;
   private final Connector connector;
@@ -62,8 +66,9 @@ public final class Network implements AutoCloseable {
   private final Replication replication;
   private final ReadWatch readWatch;
   private final FrameDispatcher dispatch;
-  private final DiscoveryController discovery;
+  private final Finder discovery;
   private final LinkReferee swaps;
+  private final Heartbeat heartbeat;
   private final Map<UUID, Link> links = new ConcurrentHashMap<>();
   /**
    * Every link whose reader runs, registered in {@link #links} or not yet: heartbeats and the
@@ -80,17 +85,19 @@ public final class Network implements AutoCloseable {
   /**
    * @param codec the codec for call values (service infos bind to this container)
    * @param tableCodec a codec whose service-info binding is the descriptor itself
+   * @param scheduler the container's clock and timer; its owner closes it after this
    */
   public Network(Settings settings, UUID self, String name, String host, Registry registry,
-      Codec codec, Codec tableCodec, Provider provider) {
+      Codec codec, Codec tableCodec, Provider provider, Scheduler scheduler) {
     this.settings = settings;
     this.self = self;
     this.name = name;
     this.registry = registry;
-    this.timer = Executors.newSingleThreadScheduledExecutor(daemon("trade-timer-" + name));
+    this.scheduler = scheduler;
+    this.timer = scheduler.timer();
     this.workers = Executors.newCachedThreadPool(daemon("trade-worker-" + name));
     this.readWatch = new ReadWatch(live, workers, name);
-    this.calls = new RemoteCalls(self, codec, this::nextHop, provider, timer,
+    this.calls = new RemoteCalls(self, codec, this::nextHop, provider, scheduler,
         settings.maxFrameSize());
     this.replication = new Replication(self, registry, tableCodec, links,
         settings.failureTimeout().plus(settings.heartbeatInterval()).toNanos(),
@@ -136,8 +143,10 @@ public final class Network implements AutoCloseable {
             });
           }
         });
-    this.discovery = new DiscoveryController(settings, self, name, connector, this::linkedOrLinking,
-        replication::reachable, timer, () -> closed);
+    this.discovery = new Finder(settings, self, name, connector, this::linkedOrLinking,
+        replication::reachable, scheduler, () -> closed);
+    this.heartbeat = new Heartbeat(live, settings.heartbeatInterval(), settings.failureTimeout(),
+        scheduler, workers);
     registry.addListener(
         (added, removed) -> replication.localChanged(added, removed, this::onControl));
   }
@@ -159,15 +168,14 @@ public final class Network implements AutoCloseable {
         connector.dialOnce(address);
       }
     }
-    new Heartbeat(live, settings.heartbeatInterval(), settings.failureTimeout(), timer,
-        workers).start();
+    heartbeat.start();
     if (settings.startDiscovery() || settings.startBroadcast()) {
-      discovery.finder(settings.startBroadcast(), settings.startDiscovery());
+      discovery.start(settings.startBroadcast(), settings.startDiscovery());
     }
   }
 
   /** Announcing, discovery and listening, and their switches. */
-  public DiscoveryController discovery() {
+  public Finder discovery() {
     return discovery;
   }
 
@@ -368,7 +376,7 @@ public final class Network implements AutoCloseable {
     onControl(() -> {
       replication.linkClosed(link);
       if (!closed && links.get(link.peerId) == link
-          && swaps.hold(link, reason, System.nanoTime())) {
+          && swaps.hold(link, reason, scheduler.nanoTime())) {
         LOG.log(Level.DEBUG, "{0}: link to {1} closed ({2}); a handshake with it is under way,"
             + " the loss waits for it", name, link.peerName, reason);
         onControlAfter(() -> settle(link.peerId), swaps.holdNanos()); // its replacement may come
@@ -380,7 +388,7 @@ public final class Network implements AutoCloseable {
 
   /** Takes a held loss of the link to {@code peer} now, if it is still held and due (LinkReferee). */
   private void settle(UUID peer) {
-    LinkReferee.Held h = swaps.settle(peer, links.get(peer), System.nanoTime());
+    LinkReferee.Held h = swaps.settle(peer, links.get(peer), scheduler.nanoTime());
     if (h != null) {
       lost(h.link(), h.reason());
     }
@@ -415,8 +423,10 @@ public final class Network implements AutoCloseable {
     long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(CLOSE_GRACE_MS);
     discovery.close();
     connector.close();
+    heartbeat.stop();
     // Also while this thread is stuck writing a goodbye below.
-    timer.schedule(this::closeLinksNow, CLOSE_GRACE_MS, TimeUnit.MILLISECONDS);
+    ScheduledFuture<?> late = timer.schedule(this::closeLinksNow, CLOSE_GRACE_MS,
+        TimeUnit.MILLISECONDS);
     live.forEach(Link::leave);
     calls.failAll("container " + name + " closed");
     readWatch.close();
@@ -432,7 +442,7 @@ public final class Network implements AutoCloseable {
       // Closed below.
     }
     closeLinksNow();
-    timer.shutdownNow();
+    late.cancel(false);
   }
 
   /** Closes every link still open after its goodbye had its time. */

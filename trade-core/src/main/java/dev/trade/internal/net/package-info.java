@@ -16,9 +16,10 @@
  * is locked; other threads hand it work ({@link dev.trade.internal.net.Network#onControl}) and
  * read what it publishes through volatile snapshots (next hops, the registry's snapshot). Calls
  * and replies never wait for it: they take the fast path on the threads that read links
- * ({@link dev.trade.internal.net.FrameDispatcher}). The <em>timer</em> runs what must happen
- * later (heartbeats, deadline sweeps, retries) and hands state changes back to the control
- * thread.
+ * ({@link dev.trade.internal.net.FrameDispatcher}). The <em>timer</em> is the container's
+ * ({@link dev.trade.internal.time.Scheduler}, handed in; this package cancels its own tasks and
+ * never shuts it): it runs what must happen later (heartbeats, deadline sweeps, retries) and hands
+ * state changes back to the control thread.
  *
  * <p>Layering: {@code link} imports none of its siblings; {@code mesh}, {@code remote} and
  * {@code join} import {@code link} but not one

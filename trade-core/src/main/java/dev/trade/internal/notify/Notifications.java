@@ -9,6 +9,7 @@ import dev.trade.internal.registry.Entry;
 import dev.trade.internal.registry.Query;
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
+import dev.trade.internal.time.Scheduler;
 import java.lang.System.Logger;
 import java.lang.System.Logger.Level;
 import java.time.Instant;
@@ -69,15 +70,16 @@ public final class Notifications implements Registry.Listener {
   private final Object added = new Object();
 
   /**
-   * Notifications on the real clock; their threads start with the first delivery.
+   * Notifications on the container's clock and timer; their threads start with the first delivery.
    *
+   * @param scheduler the container's (closed by the container, not here)
    * @param caller calls callbacks, conditions and services (this container)
    * @param infos binds the {@code TRADEServiceInfo} handed to joined and left callbacks
    * @param queries turns joined and left's argument into a query, or null when it is of another kind
    */
   public Notifications(Registry registry, ServiceCaller caller, InfoBinding infos,
-      Function<Object, Query> queries, String name) {
-    this(registry, caller, infos, queries, Scheduler.system(name), null, null, name);
+      Function<Object, Query> queries, Scheduler scheduler, String name) {
+    this(registry, caller, infos, queries, scheduler, null, null, name);
   }
 
   /** With a scheduler and executors of the test's (null executors: the container's own). */
@@ -259,8 +261,9 @@ public final class Notifications implements Registry.Listener {
   public void close() {
     closed = true;
     registry.removeListener(this);
+    // The timer is the container's and outlives this: what is pending on it is cancelled here.
+    live.values().forEach(l -> l.end("closed"));
     live.clear();
-    scheduler.close();
     synchronized (owned) {
       owned.forEach(ExecutorService::shutdownNow);
     }

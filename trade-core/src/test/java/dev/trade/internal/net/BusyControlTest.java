@@ -10,10 +10,12 @@ import dev.trade.internal.codec.Limits;
 import dev.trade.internal.config.Settings;
 import dev.trade.internal.net.link.Wire;
 import dev.trade.internal.registry.Registry;
+import dev.trade.internal.time.Scheduler;
 import java.time.Duration;
 import java.util.Properties;
 import java.util.UUID;
 import java.util.concurrent.CountDownLatch;
+import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
@@ -24,6 +26,13 @@ import org.junit.jupiter.api.Timeout;
  */
 @Timeout(30)
 class BusyControlTest {
+  /** The containers' clock and timer (a container owns one; these networks share it). */
+  private static final Scheduler SCHEDULER = Scheduler.system("test");
+
+  @AfterAll
+  static void stopTimer() {
+    SCHEDULER.close();
+  }
 
   @Test
   void aNewLinkIsReadAndPingedWhileTheControlThreadIsBusy() throws Exception {
@@ -36,7 +45,7 @@ class BusyControlTest {
     Codec codec = new Codec(AllowList.withDefaults(), Limits.DEFAULT, InfoBinding.NONE);
     CountDownLatch release = new CountDownLatch(1);
     try (Network net = new Network(Settings.fromProperties(p), id, "busy", "host",
-        new Registry(id.toString(), "busy", "host"), codec, codec, null)) {
+        new Registry(id.toString(), "busy", "host"), codec, codec, null, SCHEDULER)) {
       net.start();
       ControlThread.block(net, release);
       try (RawPeer peer = RawPeer.connect(net.listenAddresses().get(0))) {

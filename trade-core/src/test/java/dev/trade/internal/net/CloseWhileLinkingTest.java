@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import dev.trade.TRADEContainer;
 import dev.trade.internal.net.link.Wire;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.io.IOException;
 import java.net.InetSocketAddress;
 import java.net.Socket;
@@ -21,8 +22,7 @@ class CloseWhileLinkingTest {
 
   @Test
   void aLinkThatComesUpWhileItsContainerClosesGetsAGoodbye() throws Exception {
-    TRADEContainer c = TRADEContainer.builder().name("leaving")
-        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build();
+    TRADEContainer c = Hubs.hubBuilder("leaving").build();
     String[] at = c.getServerAddresses().get(0).split("@");
     InetSocketAddress address = new InetSocketAddress(at[0], Integer.parseInt(at[1]));
     Thread closing = new Thread(c::close);

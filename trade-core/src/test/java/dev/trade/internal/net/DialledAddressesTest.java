@@ -6,10 +6,12 @@ import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.codec.Limits;
 import dev.trade.internal.config.Settings;
 import dev.trade.internal.registry.Registry;
+import dev.trade.internal.time.Scheduler;
 import dev.trade.testing.Await;
 import java.time.Duration;
 import java.util.Properties;
 import java.util.UUID;
+import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
@@ -19,6 +21,14 @@ import org.junit.jupiter.api.Timeout;
  */
 @Timeout(60)
 class DialledAddressesTest {
+  /** The containers' clock and timer (a container owns one; these networks share it). */
+  private static final Scheduler SCHEDULER = Scheduler.system("test");
+
+  @AfterAll
+  static void stopTimer() {
+    SCHEDULER.close();
+  }
+
   private static final Duration WAIT = Duration.ofSeconds(10);
 
   @Test
@@ -45,6 +55,6 @@ class DialledAddressesTest {
     UUID id = UUID.randomUUID();
     Codec codec = new Codec(AllowList.withDefaults(), Limits.DEFAULT, InfoBinding.NONE);
     return new Network(Settings.fromProperties(p), id, name, "host",
-        new Registry(id.toString(), name, "host"), codec, codec, null);
+        new Registry(id.toString(), name, "host"), codec, codec, null, SCHEDULER);
   }
 }

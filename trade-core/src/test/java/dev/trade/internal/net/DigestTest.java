@@ -12,6 +12,7 @@ import dev.trade.internal.net.mesh.Digest;
 import dev.trade.internal.net.mesh.Topology;
 import dev.trade.internal.registry.Table;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.net.InetSocketAddress;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -44,8 +45,7 @@ class DigestTest {
 
   @BeforeEach
   void start() throws Exception {
-    provider = TRADEContainer.builder().name("provider").property("STARTACCEPTINGCONNECTIONS", "true")
-        .property("SERVERIPS", "127.0.0.1@0").build();
+    provider = Hubs.hubBuilder("provider").build();
     provider.registerAllServices(new Arm());
     String[] a = provider.getServerAddresses().get(0).split("@");
     address = new InetSocketAddress(a[0], Integer.parseInt(a[1]));

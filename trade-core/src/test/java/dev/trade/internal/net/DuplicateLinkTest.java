@@ -18,6 +18,7 @@ import dev.trade.internal.net.link.LinkReferee;
 import dev.trade.internal.net.link.Wire;
 import dev.trade.internal.net.remote.RemoteCalls;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.ServerSocket;
@@ -48,8 +49,7 @@ class DuplicateLinkTest {
   void aNeighbourThatLinksAgainIsNeverMissingWhileTheLinksAreSwapped() throws Exception {
     UUID twin = UUID.randomUUID();
     String id = twin.toString();
-    try (TRADEContainer c = TRADEContainer.builder().name("swapper")
-        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build()) {
+    try (TRADEContainer c = Hubs.hubBuilder("swapper").build()) {
       RawPeer linked = RawPeer.connect(c, twin);
       linked.handshake("twin", 1);
       Await.until(WAIT, () -> c.getNeighbours().contains(id), "the first link");
@@ -91,8 +91,7 @@ class DuplicateLinkTest {
   void ofTwoLinksOneContainerDialledTheOneDialledLaterIsKeptWhateverOrderTheyArrivedIn()
       throws Exception {
     UUID twin = UUID.randomUUID();
-    try (TRADEContainer c = TRADEContainer.builder().name("dialled")
-        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build();
+    try (TRADEContainer c = Hubs.hubBuilder("dialled").build();
         RawPeer later = RawPeer.connect(c, twin);
         RawPeer earlier = RawPeer.connect(c, twin)) {
       later.handshake("twin-second", 2);
@@ -161,9 +160,7 @@ class DuplicateLinkTest {
   private static void lostDuringAHandshake(boolean replaced) throws Exception {
     UUID twin = UUID.randomUUID();
     try (LogCapture log = new LogCapture();
-        TRADEContainer c = TRADEContainer.builder().name("holder")
-            .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
-            .build();
+        TRADEContainer c = Hubs.hubBuilder("holder").build();
         RawPeer old = RawPeer.connect(c, twin);
         RawPeer next = RawPeer.connect(c, twin)) {
       old.handshake("twin", 1);
@@ -215,8 +212,7 @@ class DuplicateLinkTest {
   @Test
   void aCallMadeOverALinkJustReplacedIsStillAnsweredOverTheLinkKept() throws Exception {
     UUID twin = UUID.randomUUID();
-    try (TRADEContainer c = TRADEContainer.builder().name("provider")
-        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build();
+    try (TRADEContainer c = Hubs.hubBuilder("provider").build();
         RawPeer old = RawPeer.connect(c, twin);
         RawPeer kept = RawPeer.connect(c, twin)) {
       c.registerAllServices(new FreshLinkTest.Arm()); // its first service

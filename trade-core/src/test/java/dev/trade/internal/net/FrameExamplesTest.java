@@ -20,7 +20,6 @@ import dev.trade.internal.net.mesh.Digest;
 import dev.trade.internal.net.mesh.StateFrames;
 import dev.trade.internal.net.mesh.Topology;
 import dev.trade.internal.net.remote.RemoteCalls;
-import dev.trade.internal.net.remote.ReplySender;
 import dev.trade.internal.registry.LocalService;
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
@@ -125,7 +124,8 @@ class FrameExamplesTest {
   private static byte[] lockedReplyFrame() throws Exception {
     byte[] call = callFrame();
     byte[] payload = Arrays.copyOfRange(call, Wire.HEADER, call.length);
-    ByteSink out = new ReplySender(ARM, null, null, 1 << 26).replyStart(payload, Wire.FAILED_LOCKED);
+    ByteSink out = new RemoteCalls(ARM, codec(), null, null, null, 1 << 26)
+        .replyStart(payload, Wire.FAILED_LOCKED);
     out.writeText("locked");
     return Frames.finish(out);
   }
@@ -134,7 +134,7 @@ class FrameExamplesTest {
   private static byte[] replyFrame() throws Exception {
     byte[] call = callFrame();
     byte[] payload = Arrays.copyOfRange(call, Wire.HEADER, call.length);
-    ReplySender arm = new ReplySender(ARM, null, null, 1 << 26);
+    RemoteCalls arm = new RemoteCalls(ARM, codec(), null, null, null, 1 << 26);
     ByteSink out = arm.replyStart(payload, Wire.OK);
     codec().write(Boolean.TRUE, out);
     return Frames.finish(out);

@@ -13,6 +13,7 @@ import dev.trade.internal.net.link.Frames;
 import dev.trade.internal.net.link.Handshake;
 import dev.trade.internal.net.link.Wire;
 import dev.trade.internal.net.remote.RemoteCalls;
+import dev.trade.testing.Hubs;
 import java.net.InetSocketAddress;
 import java.time.Duration;
 import java.util.Arrays;
@@ -47,8 +48,7 @@ class FreshLinkTest {
 
   /** @param forwarded whether the call comes from a container behind the peer, unknown to the provider */
   private void answeredOverTheLinkItCameBy(boolean forwarded) throws Exception {
-    try (TRADEContainer server = TRADEContainer.builder().name("provider")
-        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build()) {
+    try (TRADEContainer server = Hubs.hubBuilder("provider").build()) {
       server.registerAllServices(new Arm()); // its first service
       String[] a = server.getServerAddresses().get(0).split("@");
       try (RawPeer p = RawPeer.connect(new InetSocketAddress(a[0], Integer.parseInt(a[1])))) {

@@ -14,6 +14,7 @@ import dev.trade.internal.net.link.Handshake;
 import dev.trade.internal.net.link.Frames;
 import dev.trade.internal.net.link.Wire;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.io.IOException;
 import java.net.InetSocketAddress;
 import java.nio.ByteBuffer;
@@ -52,12 +53,10 @@ class HostileInputTest {
   }
 
   private final LogCapture log = new LogCapture();
-  private final TRADEContainer server = TRADEContainer.builder().name("victim")
-      .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
+  private final TRADEContainer server = Hubs.hubBuilder("victim")
       .property("TIMEOUT_CLIENT_SOCKET", String.valueOf(HANDSHAKE_TIMEOUT_MS))
       .property("MAXFRAMESIZE", String.valueOf(MAX_FRAME)).build();
-  private final TRADEContainer client = TRADEContainer.builder().name("bystander")
-      .property("CONNECTCONTAINERS", server.getServerAddresses().get(0)).build();
+  private final TRADEContainer client = Hubs.spokeBuilder("bystander", server).build();
   private final InetSocketAddress address = new InetSocketAddress("127.0.0.1",
       Integer.parseInt(server.getServerAddresses().get(0).split("@")[1]));
   private SteadyCaller caller;
@@ -290,8 +289,7 @@ class HostileInputTest {
 
   @Test
   void connectionsBeyondTheHandshakeLimitAreClosedAtOnce() throws Exception {
-    try (TRADEContainer slow = TRADEContainer.builder().name("slowgate")
-        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
+    try (TRADEContainer slow = Hubs.hubBuilder("slowgate")
         .property("TIMEOUT_CLIENT_SOCKET", "20000").build()) {
       String[] a = slow.getServerAddresses().get(0).split("@");
       InetSocketAddress gate = new InetSocketAddress(a[0], Integer.parseInt(a[1]));

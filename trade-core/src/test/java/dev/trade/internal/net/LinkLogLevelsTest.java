@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 
 import dev.trade.TRADEContainer;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.time.Duration;
 import java.util.logging.Level;
 import org.junit.jupiter.api.AfterEach;
@@ -28,10 +29,8 @@ class LinkLogLevelsTest {
 
   @Test
   void linkUpAndGoodbyeAreDebugLines() {
-    try (TRADEContainer hub = TRADEContainer.builder().name("hub")
-        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0").build()) {
-      TRADEContainer spoke = TRADEContainer.builder().name("spoke")
-          .property("CONNECTCONTAINERS", hub.getServerAddresses().get(0)).build();
+    try (TRADEContainer hub = Hubs.hubBuilder("hub").build()) {
+      TRADEContainer spoke = Hubs.spokeBuilder("spoke", hub).build();
       try (spoke) {
         Await.until(WAIT, () -> log.has(Level.FINE, "hub: linked to spoke")
             && log.has(Level.FINE, "spoke: linked to hub"), "both ends' link lines; have " + log.lines());

@@ -10,6 +10,7 @@ import dev.trade.internal.codec.Limits;
 import dev.trade.internal.config.Settings;
 import dev.trade.internal.discovery.LoopbackMulticast;
 import dev.trade.internal.registry.Registry;
+import dev.trade.internal.time.Scheduler;
 import dev.trade.testing.Await;
 import java.net.DatagramSocket;
 import java.net.InetAddress;
@@ -19,6 +20,7 @@ import java.util.UUID;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ThreadLocalRandom;
 import java.util.logging.Level;
+import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -31,6 +33,14 @@ import org.junit.jupiter.api.Timeout;
  */
 @Timeout(60)
 class LinkingPeerNotDialledTest {
+  /** The containers' clock and timer (a container owns one; these networks share it). */
+  private static final Scheduler SCHEDULER = Scheduler.system("test");
+
+  @AfterAll
+  static void stopTimer() {
+    SCHEDULER.close();
+  }
+
   private static final Duration WAIT = Duration.ofSeconds(10);
 
   @BeforeEach
@@ -87,6 +97,6 @@ class LinkingPeerNotDialledTest {
   private static Network network(Properties p, UUID id, String name) {
     Codec codec = new Codec(AllowList.withDefaults(), Limits.DEFAULT, InfoBinding.NONE);
     return new Network(Settings.fromProperties(p), id, name, "host",
-        new Registry(id.toString(), name, "host"), codec, codec, null);
+        new Registry(id.toString(), name, "host"), codec, codec, null, SCHEDULER);
   }
 }

@@ -9,6 +9,7 @@ import dev.trade.internal.codec.ByteSink;
 import dev.trade.internal.net.link.Frames;
 import dev.trade.internal.net.link.Handshake;
 import dev.trade.internal.net.link.Wire;
+import dev.trade.testing.Hubs;
 import java.io.DataInputStream;
 import java.io.EOFException;
 import java.net.InetSocketAddress;
@@ -79,8 +80,7 @@ class MalformedCallTest {
 
   @Test
   void malformedArgumentsGetAnErrorReplyAndTheConnectionIsClosed() throws Exception {
-    try (TRADEContainer server = TRADEContainer.builder().name("server")
-        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
+    try (TRADEContainer server = Hubs.hubBuilder("server")
         .property("CREDENTIALS", "secret").build()) {
       server.registerAllServices(new Echo()); // the container's first service
       String[] address = server.getServerAddresses().get(0).split("@");

@@ -11,6 +11,7 @@ import dev.trade.internal.net.link.Frames;
 import dev.trade.internal.net.link.Wire;
 import dev.trade.internal.net.remote.RemoteCalls;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.io.ByteArrayOutputStream;
 import java.net.InetSocketAddress;
 import java.time.Duration;
@@ -46,8 +47,7 @@ class ManyCallsOnOneLinkTest {
   @Timeout(90)
   void callsBeyondTheBoundAreAnsweredAtOnceAndTheRestWhenTheyEnd() throws Exception {
     Gate gate = new Gate();
-    try (TRADEContainer provider = TRADEContainer.builder().name("provider")
-        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
+    try (TRADEContainer provider = Hubs.hubBuilder("provider")
         // The caller sends nothing once its calls are out: on a slow machine the provider must
         // not find it silent before the last of them entered the gate.
         .property("FAILURETIMEOUT", "60000").build()) {

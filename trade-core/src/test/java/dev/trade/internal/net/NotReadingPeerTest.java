@@ -10,6 +10,7 @@ import dev.trade.internal.net.link.Frames;
 import dev.trade.internal.net.link.Wire;
 import dev.trade.internal.net.mesh.StateFrames;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
@@ -136,8 +137,7 @@ class NotReadingPeerTest {
 
   /** A container that accepts connections on loopback; the test adds its other settings. */
   private static TRADEContainer.Builder accepting(String name) {
-    return TRADEContainer.builder().name(name)
-        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0");
+    return Hubs.hubBuilder(name);
   }
 
   /** {@code count} TABLE_REQUEST frames for the table of container {@code id}, back to back. */

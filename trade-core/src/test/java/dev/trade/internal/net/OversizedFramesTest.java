@@ -12,6 +12,7 @@ import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.time.Duration;
 import java.util.logging.Level;
 import org.junit.jupiter.api.AfterEach;
@@ -45,11 +46,9 @@ class OversizedFramesTest {
   }
 
   private final LogCapture log = new LogCapture();
-  private final TRADEContainer provider = TRADEContainer.builder().name("store")
-      .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
+  private final TRADEContainer provider = Hubs.hubBuilder("store")
       .property("MAXFRAMESIZE", String.valueOf(MAX_FRAME)).build();
-  private final TRADEContainer caller = TRADEContainer.builder().name("client")
-      .property("CONNECTCONTAINERS", provider.getServerAddresses().get(0))
+  private final TRADEContainer caller = Hubs.spokeBuilder("client", provider)
       .property("MAXFRAMESIZE", String.valueOf(MAX_FRAME)).build();
 
   @BeforeEach

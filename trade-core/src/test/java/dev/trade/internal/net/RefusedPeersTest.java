@@ -9,6 +9,7 @@ import dev.trade.TRADEException;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.net.InetSocketAddress;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -43,8 +44,7 @@ class RefusedPeersTest {
 
   @BeforeEach
   void startTheGate() throws TRADEException {
-    gate = start(TRADEContainer.builder().name("gate").property("STARTACCEPTINGCONNECTIONS", "true")
-        .property("SERVERIPS", "127.0.0.1@0"));
+    gate = start(Hubs.hubBuilder("gate"));
     gate.registerAllServices(new Arm(), "gate");
     gateAddress = gate.getServerAddresses().get(0);
   }

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trade.TRADEContainer;
+import dev.trade.testing.Hubs;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
@@ -36,9 +37,7 @@ class RelayTest {
   }
 
   private static TRADEContainer listening(String name) {
-    return TRADEContainer.builder().name(name)
-        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
-        .property("CREDENTIALS", "only-a-and-b-know").build();
+    return Hubs.hubBuilder(name).property("CREDENTIALS", "only-a-and-b-know").build();
   }
 
   private static Socket connect(TRADEContainer c) throws IOException {

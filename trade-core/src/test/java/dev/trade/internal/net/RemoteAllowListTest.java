@@ -11,6 +11,7 @@ import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.time.Duration;
 import org.example.contraband.Parcel;
 import org.junit.jupiter.api.Test;
@@ -32,11 +33,9 @@ class RemoteAllowListTest {
 
   /** Calls {@code describe(parcel)} from a second container on one that is configured by {@code allow}. */
   private static String callWithParcel(String allow) throws TRADEException {
-    try (TRADEContainer provider = TRADEContainer.builder().name("inspector")
-            .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
+    try (TRADEContainer provider = Hubs.hubBuilder("inspector")
             .property("SERIALIZATIONALLOWLIST", allow).build();
-        TRADEContainer caller = TRADEContainer.builder().name("sender")
-            .property("CONNECTCONTAINERS", provider.getServerAddresses().get(0)).build()) {
+        TRADEContainer caller = Hubs.spokeBuilder("sender", provider).build()) {
       provider.registerAllServices(new Inspector());
       TRADEServiceConstraints describe = new TRADEServiceConstraints().name("describe");
       Await.until(Duration.ofSeconds(10), () -> !caller.getAvailableServices(describe).isEmpty(),

@@ -17,6 +17,7 @@ import dev.trade.internal.net.remote.RemoteCalls;
 import dev.trade.internal.registry.ServiceDescriptor;
 import dev.trade.internal.registry.Table;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.nio.ByteBuffer;
 import java.time.Duration;
 import java.util.Arrays;
@@ -41,9 +42,7 @@ class RouteDisagreementTest {
     Codec tables = new Codec(AllowList.withDefaults(), Limits.DEFAULT, InfoBinding.DESCRIPTORS);
     String far = UUID.randomUUID().toString();
     String beyond = UUID.randomUUID().toString();
-    try (TRADEContainer x = TRADEContainer.builder().name("x")
-            .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
-            .build();
+    try (TRADEContainer x = Hubs.hubBuilder("x").build();
         RawPeer a = RawPeer.connect(x);
         RawPeer b = RawPeer.connect(x)) {
       a.handshake("a");

@@ -12,6 +12,7 @@ import dev.trade.TRADESerializationException;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
@@ -42,9 +43,7 @@ class UnequalFrameLimitsTest {
   }
 
   private TRADEContainer container(String name, int maxFrame, TRADEContainer connectTo) {
-    TRADEContainer c = TRADEContainer.builder().name(name)
-        .property("STARTACCEPTINGCONNECTIONS", "true").property("SERVERIPS", "127.0.0.1@0")
-        .property("CONNECTCONTAINERS",
+    TRADEContainer c = Hubs.hubBuilder(name).property("CONNECTCONTAINERS",
             connectTo == null ? "" : connectTo.getServerAddresses().get(0))
         .property("MAXFRAMESIZE", String.valueOf(maxFrame)).build();
     containers.add(c);

@@ -17,6 +17,7 @@ import dev.trade.internal.net.mesh.Topology;
 import dev.trade.internal.registry.ServiceDescriptor;
 import dev.trade.internal.registry.Table;
 import dev.trade.testing.Await;
+import dev.trade.testing.Hubs;
 import java.net.InetSocketAddress;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -48,8 +49,7 @@ class UnroutableTableTest {
 
   @BeforeEach
   void link() throws Exception {
-    provider = TRADEContainer.builder().name("provider").property("STARTACCEPTINGCONNECTIONS", "true")
-        .property("SERVERIPS", "127.0.0.1@0").build();
+    provider = Hubs.hubBuilder("provider").build();
     String[] a = provider.getServerAddresses().get(0).split("@");
     peer = RawPeer.connect(new InetSocketAddress(a[0], Integer.parseInt(a[1])));
     peer.handshake("near");

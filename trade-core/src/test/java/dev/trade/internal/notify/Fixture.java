@@ -13,6 +13,7 @@ import dev.trade.internal.registry.LocalService;
 import dev.trade.internal.registry.Query;
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
+import dev.trade.testing.FakeScheduler;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;

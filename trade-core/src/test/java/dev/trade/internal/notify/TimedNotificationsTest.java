@@ -170,6 +170,18 @@ class TimedNotificationsTest {
     assertEquals("cancelled", f.engine.ended().get(0).get("endReason"));
   }
 
+  /** The timer is the container's and outlives the engine: closing takes its tasks off it. */
+  @Test
+  void closingLeavesNothingOnTheContainersTimer() throws TRADEException {
+    f.request("every", 10L, null, f.service(sink, "tick"));
+    f.request("after", 1_000L, null, f.service(sink, "tick"));
+    assertEquals(2, f.clock.pending());
+    f.engine.close();
+    assertEquals(0, f.clock.pending());
+    f.advanceAndDeliver(2_000);
+    assertEquals(List.of(), sink.got);
+  }
+
   @Test
   void itEndsWhenItsCallbackOrItsConditionLeavesAndSaysWhy() throws TRADEException {
     Fixture.Sink other = new Fixture.Sink();

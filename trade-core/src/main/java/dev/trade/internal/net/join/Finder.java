@@ -1,11 +1,13 @@
 package dev.trade.internal.net.join;
 
 import dev.trade.internal.config.DiscoveryRange;
+import dev.trade.internal.config.PeerAddress;
 import dev.trade.internal.config.Settings;
 import dev.trade.internal.discovery.Announcement;
 import dev.trade.internal.discovery.Discovery;
 import dev.trade.internal.net.link.Connector;
 import dev.trade.internal.net.link.LinkReferee;
+import dev.trade.internal.time.Scheduler;
 import java.io.IOException;
 import java.lang.System.Logger.Level;
 import java.lang.System.Logger;
@@ -21,15 +23,17 @@ import java.util.TreeSet;
 import java.util.UUID;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.RejectedExecutionException;
-import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.function.BooleanSupplier;
 import java.util.function.Predicate;
 import java.util.function.Supplier;
 
 /**
- * Turns multicast discovery into links: announces this container's listen addresses, keeps the
+ * How a container is found and whom it links to: the sockets it accepts connections on, the
+ * switches that turn announcing and discovery on or off at run time, and the finding itself. It
+ * announces this container's listen addresses, keeps the
  * set of live containers it hears, and dials the ones {@link Overlay} chooses out of that set
  * (all of them in a small system, O(log n) in a large one; the rest are reached by forwarding).
  * A newcomer first dials the overlay's choice out of those that answered it, then, once it has
@@ -39,9 +43,13 @@ import java.util.function.Supplier;
  *
  * <p>Of two containers that choose each other, the one with the smaller id dials at once and the
  * other only if no link appeared shortly after, so that normally one connection is made, not two;
- * a container that only one side chooses is dialled at once. Safe for concurrent use.
+ * a container that only one side chooses is dialled at once.
+ *
+ * <p>Multicast discovery ({@code dev.trade.internal.discovery}) starts when first switched on,
+ * never once the container has closed. Safe for concurrent use: listening and discovery are set
+ * up, switched and closed under {@code switches}; choosing is guarded by this object's lock.
  */
-final class Finder implements AutoCloseable {
+public final class Finder implements AutoCloseable {
   private static final Logger LOG = System.getLogger("dev.trade.discovery");
   private static final long SECOND_SIDE_DELAY_MS = 300;
   private static final long DIAL_GRACE_MS = 2_000;
@@ -60,21 +68,25 @@ final class Finder implements AutoCloseable {
   /** A container heard: its latest announcement, and when that arrived (nanoTime). */
   private record Heard(Announcement announcement, long atNanos) {}
 
+  private final Settings settings;
   private final UUID self;
   /** This container's name, for the DEBUG lines that trace a join. */
   private final String name;
   private final Predicate<UUID> linked;
   private final Supplier<Set<UUID>> reachable;
   private final Connector connector;
-  private final ScheduledExecutorService timer;
-  private final Discovery discovery;
+  private final Scheduler scheduler;
+  private final BooleanSupplier closed;
+  private final Object switches = new Object();
+  /** Multicast discovery, once switched on; null before. Written under switches. */
+  private volatile Discovery discovery;
+  private ScheduledFuture<?> sweep; // Guarded by switches.
   private final long expiry;
   private final long holdMax;
   private final Map<UUID, Long> dialling = new ConcurrentHashMap<>();
   private final Map<UUID, Heard> known = new ConcurrentHashMap<>();
   /** Containers that left: the last announcement sequence seen and when (nanoTime). */
   private final Map<UUID, long[]> forgotten = new ConcurrentHashMap<>();
-  private final ScheduledFuture<?> sweep;
   private final AtomicBoolean choosing = new AtomicBoolean();
   private volatile Set<UUID> wanted = Set.of();
   /** The containers that answered this one's announcements (see {@link #early}). */
@@ -82,68 +94,148 @@ final class Finder implements AutoCloseable {
   /** When the first choice was made (nanoTime), 0 before it. Guarded by this. */
   private long firstChoiceAt;
 
-  Finder(Settings settings, UUID self, String name, Supplier<List<InetSocketAddress>> addresses,
-      Predicate<UUID> linked, Supplier<Set<UUID>> reachable, Connector connector,
-      ScheduledExecutorService timer, boolean broadcast, boolean discover) throws IOException {
+  /**
+   * Finds nothing yet: listening starts with {@link #listen}, discovery with {@link #start} or a
+   * switch.
+   *
+   * @param linked whether this container has a link to a container, or a handshake with it under
+   *     way (then it is not dialled)
+   * @param reachable the other containers routing reaches now
+   * @param scheduler the container's clock and timer
+   * @param closed whether the container has closed (then discovery does not start any more)
+   */
+  public Finder(Settings settings, UUID self, String name, Connector connector,
+      Predicate<UUID> linked, Supplier<Set<UUID>> reachable, Scheduler scheduler,
+      BooleanSupplier closed) {
+    this.settings = settings;
     this.self = self;
     this.name = name;
     this.linked = linked;
     this.reachable = reachable;
     this.connector = connector;
-    this.timer = timer;
+    this.scheduler = scheduler;
+    this.closed = closed;
     this.expiry = 3 * settings.broadcastInterval().toNanos() + TimeUnit.MILLISECONDS.toNanos(SWEEP_MS);
     this.holdMax = HOLD_MAX_INTERVALS * settings.broadcastInterval().toNanos();
-    this.discovery = Discovery.builder()
-        .systemId(settings.tradeSysId())
-        .credentials(settings.credentials())
-        .group(settings.multicastAddress(), settings.broadcastPort())
-        .interval(settings.broadcastInterval())
-        .range(settings.discoveryRange() == DiscoveryRange.SUBNET
-            ? Discovery.Range.SUBNET : Discovery.Range.LOCALHOST)
-        .interfaces(settings.discoveryInterfaces())
-        .maxClockSkew(settings.discoveryClockSkew())
-        .container(self.toString(), name)
-        .addresses(addresses)
-        .listener(this::heard)
-        .answering(this::answers)
-        .broadcast(broadcast)
-        .discovery(discover)
-        .scheduler(timer)
-        .start();
-    this.sweep = timer.scheduleWithFixedDelay(this::sweep, SWEEP_MS, SWEEP_MS, TimeUnit.MILLISECONDS);
   }
 
-  void setBroadcast(boolean on) {
-    discovery.setBroadcast(on);
+  /**
+   * Listens on SERVERIPS, or where discovery can reach: loopback for the {@code localhost} range,
+   * every interface for {@code subnet} (announced per interface, never as a wildcard).
+   */
+  public void listen() throws IOException {
+    synchronized (switches) {
+      if (!connector.listening().isEmpty()) {
+        return;
+      }
+      List<PeerAddress> listen = settings.serverAddresses();
+      if (listen.isEmpty()) {
+        listen = List.of(new PeerAddress(
+            settings.discoveryRange() == DiscoveryRange.SUBNET ? "0.0.0.0" : "127.0.0.1", 0));
+      }
+      for (PeerAddress a : listen) {
+        try {
+          connector.listen(new InetSocketAddress(a.host(), a.port()));
+        } catch (IOException e) {
+          throw new IOException("cannot listen on SERVERIPS address " + a + ": " + e.getMessage(),
+              e);
+        }
+      }
+    }
   }
 
-  void setDiscovery(boolean on) {
-    discovery.setDiscovery(on);
+  /**
+   * Starts multicast discovery with these switches if it has not started; nothing once the
+   * container closed.
+   *
+   * @return whether discovery runs
+   * @throws IOException if the discovery socket cannot be opened
+   */
+  public boolean start(boolean broadcast, boolean discover) throws IOException {
+    synchronized (switches) {
+      if (discovery == null && !closed.getAsBoolean()) {
+        discovery = Discovery.builder()
+            .systemId(settings.tradeSysId())
+            .credentials(settings.credentials())
+            .group(settings.multicastAddress(), settings.broadcastPort())
+            .interval(settings.broadcastInterval())
+            .range(settings.discoveryRange() == DiscoveryRange.SUBNET
+                ? Discovery.Range.SUBNET : Discovery.Range.LOCALHOST)
+            .interfaces(settings.discoveryInterfaces())
+            .maxClockSkew(settings.discoveryClockSkew())
+            .container(self.toString(), name)
+            .addresses(connector::announceable)
+            .listener(this::heard)
+            .answering(this::answers)
+            .broadcast(broadcast)
+            .discovery(discover)
+            .scheduler(scheduler.timer())
+            .start();
+        sweep = scheduler.timer().scheduleWithFixedDelay(() -> sweep(scheduler.nanoTime()),
+            SWEEP_MS, SWEEP_MS, TimeUnit.MILLISECONDS);
+      }
+      return discovery != null;
+    }
   }
 
-  boolean isBroadcasting() {
-    return discovery.isBroadcasting();
+  /**
+   * Turns multicast discovery (listening for announcements and connecting) on or off at run time.
+   *
+   * @throws IOException if discovery has to start and cannot open its socket
+   */
+  public void setDiscovery(boolean on) throws IOException {
+    if (start(false, on)) {
+      discovery.setDiscovery(on);
+    }
   }
 
-  boolean isDiscovering() {
-    return discovery.isDiscovering();
+  /**
+   * Turns announcing this container on or off at run time (it then accepts connections, if it did
+   * not already).
+   *
+   * @throws IOException if a listen socket or the discovery socket cannot be opened
+   */
+  public void setBroadcast(boolean on) throws IOException {
+    if (on) {
+      listen();
+    }
+    if (start(on, false)) {
+      discovery.setBroadcast(on);
+      if (on) {
+        discovery.announceNow();
+      }
+    }
   }
 
-  /** Announces again now (the listen addresses changed). */
-  void announceNow() {
-    discovery.announceNow();
+  /** Whether this container listens for announcements. */
+  public boolean isDiscovering() {
+    Discovery d = discovery;
+    return d != null && d.isDiscovering();
+  }
+
+  /** Whether this container announces itself. */
+  public boolean isBroadcasting() {
+    Discovery d = discovery;
+    return d != null && d.isBroadcasting();
   }
 
   /**
    * Forgets {@code peer} (routing found it unreachable: it left or died), so that the overlay forms
    * again without it at once; its announcements count again only when newer than the last one
-   * heard. Any thread.
+   * heard. Any thread; nothing once the container closed.
    */
-  void forget(UUID peer) {
+  public void unreachable(UUID peer) {
+    if (!closed.getAsBoolean() && discovery != null) {
+      forget(peer);
+    }
+  }
+
+  /** See {@link #unreachable}. */
+  private void forget(UUID peer) {
     answered.remove(peer);
     Heard h = known.remove(peer);
     if (h != null) {
-      forgotten.put(peer, new long[] {h.announcement().sequence(), System.nanoTime()});
+      forgotten.put(peer, new long[] {h.announcement().sequence(), scheduler.nanoTime()});
       membershipChanged();
     }
   }
@@ -174,7 +266,7 @@ final class Finder implements AutoCloseable {
     if (answer) {
       answered.add(peer);
     }
-    if (known.put(peer, new Heard(a, System.nanoTime())) == null) {
+    if (known.put(peer, new Heard(a, scheduler.nanoTime())) == null) {
       LOG.log(Level.DEBUG, "{0}: heard {1} ({2})", name, a.containerName(), peer);
       membershipChanged();
     } else if (wanted.contains(peer)) {
@@ -270,7 +362,7 @@ final class Finder implements AutoCloseable {
    * bridging container, are never heard). Guarded by this.
    */
   private boolean holding() {
-    long now = System.nanoTime();
+    long now = scheduler.nanoTime();
     if (firstChoiceAt == 0) {
       firstChoiceAt = now;
       return false;
@@ -325,7 +417,7 @@ final class Finder implements AutoCloseable {
     if (linked.test(peer)) {
       return;
     }
-    long now = System.nanoTime();
+    long now = scheduler.nanoTime();
     Long since = dialling.get(peer);
     if (since != null && now - since < TimeUnit.MILLISECONDS.toNanos(DIAL_GRACE_MS)) {
       return; // a dial is under way
@@ -374,10 +466,9 @@ final class Finder implements AutoCloseable {
 
   /**
    * Once a second: drops containers that stopped announcing, dials chosen containers whose link
-   * was lost (or whose dial failed), and forgets old bookkeeping.
+   * was lost (or whose dial failed), and forgets old bookkeeping; at {@code now}, on the timer.
    */
-  private void sweep() {
-    long now = System.nanoTime();
+  private void sweep(long now) {
     boolean changed = known.entrySet().removeIf(e -> now - e.getValue().atNanos() > expiry
         && !linked.test(e.getKey()));
     dialling.values().removeIf(t -> now - t > TimeUnit.MILLISECONDS.toNanos(DIAL_GRACE_MS));
@@ -394,15 +485,20 @@ final class Finder implements AutoCloseable {
 
   private void later(Runnable task, long delayMs) {
     try {
-      timer.schedule(task, delayMs, TimeUnit.MILLISECONDS);
+      scheduler.timer().schedule(task, delayMs, TimeUnit.MILLISECONDS);
     } catch (RejectedExecutionException e) {
       // The container is closing.
     }
   }
 
+  /** Stops discovery, if it started (the container closes). */
   @Override
   public void close() {
-    sweep.cancel(false);
-    discovery.close();
+    synchronized (switches) {
+      if (discovery != null) {
+        sweep.cancel(false);
+        discovery.close();
+      }
+    }
   }
 }

@@ -1,5 +1,6 @@
 package dev.trade.internal.net.link;
 
+import dev.trade.internal.time.Scheduler;
 import java.io.IOException;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -8,6 +9,7 @@ import java.util.List;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 
 /**
@@ -32,8 +34,10 @@ public final class Heartbeat {
   private final Collection<Link> links;
   private final long interval;
   private final long silence;
+  private final Scheduler scheduler;
   private final ScheduledExecutorService timer;
   private final ExecutorService workers;
+  private volatile ScheduledFuture<?> beating;
   // Timer thread only.
   private long lastBeat;
   /** When the last stall of this process ended (nanoTime); silence counts from there at most. */
@@ -41,11 +45,12 @@ public final class Heartbeat {
 
   /** @param links the live links, read at every beat */
   public Heartbeat(Collection<Link> links, Duration interval, Duration silence,
-      ScheduledExecutorService timer, ExecutorService workers) {
+      Scheduler scheduler, ExecutorService workers) {
     this.links = links;
     this.interval = interval.toNanos();
     this.silence = silence.toNanos();
-    this.timer = timer;
+    this.scheduler = scheduler;
+    this.timer = scheduler.timer();
     this.workers = workers;
   }
 
@@ -63,10 +68,19 @@ public final class Heartbeat {
     }
   }
 
+  /** Beats every interval on the scheduler's timer, at its clock's time, until {@link #stop}. */
   public void start() {
-    started(System.nanoTime());
-    timer.scheduleAtFixedRate(() -> beat(System.nanoTime()), interval, interval,
+    started(scheduler.nanoTime());
+    beating = timer.scheduleAtFixedRate(() -> beat(scheduler.nanoTime()), interval, interval,
         TimeUnit.NANOSECONDS);
+  }
+
+  /** Stops beating (the timer is the container's and goes on). */
+  public void stop() {
+    ScheduledFuture<?> b = beating;
+    if (b != null) {
+      b.cancel(false);
+    }
   }
 
   /**
@@ -141,7 +155,7 @@ public final class Heartbeat {
   }
 
   private void checkSilence(Link l) {
-    long now = System.nanoTime();
+    long now = scheduler.nanoTime();
     if (!l.isClosed() && now - Math.max(l.lastReceived, resumed) >= silence) {
       closeSilent(l, now - l.lastReceived);
     }

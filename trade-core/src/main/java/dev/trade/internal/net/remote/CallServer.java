@@ -39,11 +39,11 @@ final class CallServer {
   private final UUID self;
   private final Codec codec;
   private final Provider host;
-  private final ReplySender replies;
+  private final RemoteCalls replies;
   private final int maxFrame;
 
   /** @param maxFrame this container's MAXFRAMESIZE */
-  CallServer(UUID self, Codec codec, Provider host, ReplySender replies, int maxFrame) {
+  CallServer(UUID self, Codec codec, Provider host, RemoteCalls replies, int maxFrame) {
     this.self = self;
     this.codec = codec;
     this.host = host;
@@ -55,7 +55,7 @@ final class CallServer {
   void serve(Link from, byte[] payload) {
     ByteSource in = ByteSource.of(payload, Frames.ROUTING, payload.length - Frames.ROUTING);
     try {
-      in.readLong(); // request id, echoed by ReplySender.replyStart
+      in.readLong(); // request id, echoed by RemoteCalls.replyStart
       long serviceId = in.readLong();
       int timeoutMs = in.readInt();
       int count = in.readVarUInt();

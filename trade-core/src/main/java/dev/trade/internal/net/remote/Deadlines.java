@@ -1,8 +1,8 @@
 package dev.trade.internal.net.remote;
 
+import dev.trade.internal.time.Scheduler;
 import java.util.Map;
 import java.util.concurrent.RejectedExecutionException;
-import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 
@@ -20,14 +20,14 @@ final class Deadlines {
   static final long TICK_MS = 10;
   private static final long IDLE_NANOS = TimeUnit.SECONDS.toNanos(1);
 
-  private final ScheduledExecutorService timer;
+  private final Scheduler scheduler;
   private final Map<Long, RemoteCalls.Pending> pending;
   private volatile ScheduledFuture<?> sweeping;
   /** Since when the sweep found nothing pending (nanoTime), or 0; timer thread only. */
   private long idleSince;
 
-  Deadlines(ScheduledExecutorService timer, Map<Long, RemoteCalls.Pending> pending) {
-    this.timer = timer;
+  Deadlines(Scheduler scheduler, Map<Long, RemoteCalls.Pending> pending) {
+    this.scheduler = scheduler;
     this.pending = pending;
   }
 
@@ -44,8 +44,8 @@ final class Deadlines {
     synchronized (this) {
       if (sweeping == null) {
         try {
-          sweeping = timer.scheduleWithFixedDelay(this::sweep, TICK_MS, TICK_MS,
-              TimeUnit.MILLISECONDS);
+          sweeping = scheduler.timer().scheduleWithFixedDelay(() -> sweep(scheduler.nanoTime()),
+              TICK_MS, TICK_MS, TimeUnit.MILLISECONDS);
         } catch (RejectedExecutionException closing) {
           // The container is closing, and fails every pending call itself.
         }
@@ -53,8 +53,8 @@ final class Deadlines {
     }
   }
 
-  private void sweep() {
-    long now = System.nanoTime();
+  /** One sweep at {@code now} (the scheduler's clock); timer thread only. */
+  private void sweep(long now) {
     if (pending.isEmpty()) {
       if (idleSince == 0) {
         idleSince = now;

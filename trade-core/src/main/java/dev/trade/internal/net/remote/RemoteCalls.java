@@ -20,9 +20,11 @@ import dev.trade.internal.net.link.ReplyWait;
 import dev.trade.internal.net.link.ServedCalls;
 import dev.trade.internal.net.link.Wire;
 import dev.trade.internal.registry.ServiceDescriptor;
+import dev.trade.internal.time.Scheduler;
 import java.io.IOException;
 import java.lang.System.Logger.Level;
 import java.lang.System.Logger;
+import java.util.Arrays;
 import java.util.Map;
 import java.util.Set;
 import java.util.UUID;
@@ -32,15 +34,15 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Executor;
 import java.util.concurrent.RejectedExecutionException;
-import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Predicate;
 
 /**
- * Remote calls over links: the calling side (request ids, pending replies, deadlines), and
- * forwarding of calls and replies between containers that have no direct link. The providing side
- * is {@link CallServer}; replies find their way back to the caller through {@link ReplySender}.
+ * Remote calls over links, by frame: the calling side (request ids, pending replies, deadlines),
+ * forwarding of calls and replies between containers that have no direct link, and the way back:
+ * building REPLY frames and taking them to their callers, also when a route is missing or has
+ * just broken. The providing side is {@link CallServer}, which answers through this way back.
  *
  * <p>A link's reading thread serves the calls it reads and completes the futures of replies; a
  * {@link ReadWatch} keeps the link read while a call takes long, so one slow service never stalls
@@ -93,7 +95,6 @@ public final class RemoteCalls {
   private final UUID self;
   private final Codec codec;
   private final Router router;
-  private final ReplySender replies;
   private final CallServer serving;
   private final int maxFrame;
   private final AtomicLong nextId = new AtomicLong();
@@ -109,19 +110,21 @@ public final class RemoteCalls {
   private final Map<String, UUID> containerIds = new ConcurrentHashMap<>();
   private final ReplyWait replyWait = new ReplyWait();
   private final Deadlines deadlines;
-  private final ScheduledExecutorService timer;
+  private final Scheduler scheduler;
 
-  /** @param maxFrame the largest frame (after its length field) that peers accept: MAXFRAMESIZE */
-  public RemoteCalls(UUID self, Codec codec, Router router, Provider host,
-      ScheduledExecutorService timer, int maxFrame) {
+  /**
+   * @param scheduler the container's clock and timer (deadlines, waits for routes to settle)
+   * @param maxFrame the largest frame (after its length field) that peers accept: MAXFRAMESIZE
+   */
+  public RemoteCalls(UUID self, Codec codec, Router router, Provider host, Scheduler scheduler,
+      int maxFrame) {
     this.self = self;
     this.codec = codec;
     this.router = router;
-    this.replies = new ReplySender(self, router, timer, maxFrame);
-    this.serving = new CallServer(self, codec, host, replies, maxFrame);
+    this.serving = new CallServer(self, codec, host, this, maxFrame);
     this.maxFrame = maxFrame;
-    this.deadlines = new Deadlines(timer, pending);
-    this.timer = timer;
+    this.deadlines = new Deadlines(scheduler, pending);
+    this.scheduler = scheduler;
   }
 
   /** Calls a service of another container and waits for its reply until the deadline. */
@@ -253,7 +256,7 @@ public final class RemoteCalls {
     if (!Frames.fits(frame, link.sendLimit)) {
       // Each value fits its limit, but not the call as a whole; the peer would drop the link.
       throw new TRADESerializationException("Cannot call " + d.signature() + ": its arguments need "
-          + (frame.length - 4) + " bytes, more than " + ReplySender.limitOf(link, maxFrame));
+          + (frame.length - 4) + " bytes, more than " + limitOf(link, maxFrame));
     }
     return frame;
   }
@@ -339,7 +342,7 @@ public final class RemoteCalls {
     int timeoutMs = Frames.callTimeout(payload);
     if (timeoutMs <= 0) {
       // Senders write at least 1 ms: none left means the caller has given up, or a broken peer.
-      replies.reply(from, payload, Wire.FAILED_TIMEOUT, "The call arrived at container " + self
+      reply(from, payload, Wire.FAILED_TIMEOUT, "The call arrived at container " + self
           + " with no time left (timeout " + timeoutMs + " ms); it was neither run nor passed on");
       return true;
     }
@@ -350,7 +353,7 @@ public final class RemoteCalls {
       return from.serveHere(() -> forward(from, payload, destination, 0));
     }
     if (from.servedElsewhere() >= MAX_SERVED_PER_LINK) {
-      replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, CallErrors.notNowText("container "
+      reply(from, payload, Wire.FAILED_UNAVAILABLE, CallErrors.notNowText("container "
           + self + " serves " + MAX_SERVED_PER_LINK + " calls from this link at once already"));
       return true;
     }
@@ -423,7 +426,7 @@ public final class RemoteCalls {
     if (Frames.hops(payload) <= 1) {
       return;
     }
-    if (!replies.passBack(route.in, Frames.forwarded(Wire.REPLY, payload))) {
+    if (!sent(route.in, Frames.forwarded(Wire.REPLY, payload))) {
       LOG.log(Level.DEBUG, "reply to {0} dropped: the link its call came from closed", caller);
     }
   }
@@ -443,11 +446,11 @@ public final class RemoteCalls {
       // The neighbour that passed the call here has this container on its shortest path to the
       // destination, and this container has it on its own: their link states disagree for the
       // moment (a link just came or went). Passed back, the call would go round until its hops ran
-      // out; it waits for routes to settle instead, as a reply does (ReplySender#deliver), and the
+      // out; it waits for routes to settle instead, as a reply does ({@link #deliver}), and the
       // wait counts against its timeout.
       try {
-        timer.schedule(() -> forward(from, payload, destination, waits + 1), 10 << waits,
-            TimeUnit.MILLISECONDS);
+        scheduler.timer().schedule(() -> forward(from, payload, destination, waits + 1),
+            10 << waits, TimeUnit.MILLISECONDS);
         return;
       } catch (RejectedExecutionException closing) {
         // Passed back below, or failed.
@@ -455,22 +458,22 @@ public final class RemoteCalls {
     }
     if (next == null || Frames.hops(payload) <= 1) {
       LOG.log(Level.DEBUG, "dropping frame for unreachable {0}", destination);
-      replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, CallErrors.goneText("container "
+      reply(from, payload, Wire.FAILED_UNAVAILABLE, CallErrors.goneText("container "
           + destination + " is not reachable from " + self));
       return;
     }
     byte[] frame = Frames.forwarded(Wire.CALL, payload);
     if (!next.output.hasRoom()) {
       // A reading thread must not wait for room: it would stop reading the link the call came on.
-      replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, CallErrors.notNowText("the link from "
+      reply(from, payload, Wire.FAILED_UNAVAILABLE, CallErrors.notNowText("the link from "
           + self + " to " + next.peerName + " holds " + next.output.queuedBytes()
           + " bytes that it takes slower than they are sent"));
       return;
     }
     if (!Frames.fits(frame, next.sendLimit)) {
-      replies.reply(from, payload, Wire.FAILED_SERIALIZATION, "Cannot pass the call on from "
+      reply(from, payload, Wire.FAILED_SERIALIZATION, "Cannot pass the call on from "
           + self + ": it needs " + (frame.length - 4) + " bytes, more than "
-          + ReplySender.limitOf(next, maxFrame));
+          + limitOf(next, maxFrame));
       return;
     }
     long now = System.nanoTime();
@@ -486,7 +489,7 @@ public final class RemoteCalls {
       next.passOn(frame);
     } catch (IOException e) {
       passedOn.remove(key, route);
-      replies.reply(from, payload, Wire.FAILED_UNAVAILABLE, CallErrors.goneText("the route to container "
+      reply(from, payload, Wire.FAILED_UNAVAILABLE, CallErrors.goneText("the route to container "
           + destination + " was lost"));
     }
   }
@@ -509,5 +512,116 @@ public final class RemoteCalls {
   private void fail(Predicate<Pending> which, String why) {
     pending.values().removeIf(p -> which.test(p) && p.reply.completeExceptionally(
         new TRADEServiceUnavailableException(CallErrors.goneText(why))));
+  }
+
+  // The way back.
+
+  /** A reply frame's start: routing back to the caller, the request id and a status. */
+  public ByteSink replyStart(byte[] call, int status) {
+    ByteSink out = Frames.start(Wire.REPLY, 64);
+    Frames.writeRouting(out, self, Frames.source(call), Wire.MAX_HOPS);
+    out.writeBytes(call, Frames.ROUTING, 8);
+    out.writeByte(status);
+    return out;
+  }
+
+  /** A reply carrying only a text, shortened to what callers read (MAX_TEXT bytes of UTF-8). */
+  void reply(Link from, byte[] call, int status, String text) {
+    ByteSink out = replyStart(call, status);
+    out.writeText(clip(text == null ? "" : text, from == null ? maxFrame : from.sendLimit));
+    sendReply(from, call, Frames.finish(out));
+  }
+
+  /**
+   * Cuts a reply text to what the caller reads ({@code MAX_TEXT} bytes) and a frame of at most
+   * {@code limit} bytes holds: a char takes at most 3 bytes of UTF-8.
+   */
+  private static String clip(String text, int limit) {
+    int maxChars = Math.min(MAX_TEXT, limit - 64) / 3;
+    return text.length() <= maxChars ? text : text.substring(0, maxChars);
+  }
+
+  /**
+   * What limits frames over {@code link}, for error texts: this container's MAXFRAMESIZE, or the
+   * smaller limit the peer declared.
+   */
+  static String limitOf(Link link, int ownLimit) {
+    return link.sendLimit < ownLimit
+        ? link.sendLimit + ", which container '" + link.peerName + "' accepts (its MAXFRAMESIZE)"
+        : "MAXFRAMESIZE=" + ownLimit;
+  }
+
+  /**
+   * Stands in for a reply too large for {@code link}, whose peer would close the link over it: a
+   * reply to the same call that says so, status 4 in place of a result and 6 in place of anything
+   * else, sent as a container that gives up forwarding sends its own.
+   */
+  private byte[] tooLarge(byte[] frame, Link link) {
+    byte[] head = Arrays.copyOfRange(frame, Wire.HEADER, Wire.HEADER + Frames.ROUTING + 9);
+    boolean result = head[Frames.ROUTING + 8] == Wire.OK;
+    ByteSink out = Frames.start(Wire.REPLY, 192);
+    Frames.writeRouting(out, self, Frames.destination(head), Wire.MAX_HOPS);
+    out.writeBytes(head, Frames.ROUTING, 8);
+    out.writeByte(result ? Wire.FAILED_SERIALIZATION : Wire.FAILED_OTHER);
+    out.writeText(clip("The " + (result ? "result" : "reply") + " cannot travel: it needs "
+        + (frame.length - 4) + " bytes, more than " + limitOf(link, maxFrame), link.sendLimit));
+    return Frames.finish(out);
+  }
+
+  /**
+   * Sends a reply to its caller: straight back over the link the call came in on, else (that link
+   * closed) along the route. The neighbour that passed the call on is the caller or knows the way
+   * back, having just forwarded it, and that way is as short as the caller's route here. The route
+   * from here may not know it yet (a call can overtake link states: a new neighbour's first calls,
+   * calls along a path that just formed), or may still lead over a link that is going down, whose
+   * failing write can come after this returns (another thread writing, or the reader's burst) and
+   * would lose the reply, leaving the caller waiting for its deadline.
+   */
+  void sendReply(Link from, byte[] call, byte[] frame) {
+    if (sent(from, frame)) {
+      return;
+    }
+    UUID caller = Frames.source(call);
+    Link route = router.nextHop(caller);
+    if (route == from || !sent(route, frame)) {
+      deliver(caller, frame, 0); // both failed just now: wait for routes to settle
+    }
+  }
+
+  /**
+   * Sends over {@code link} if it is there and open; false if not or if the write failed. A frame
+   * too large for the link is replaced by one that says so (see {@link #tooLarge}).
+   */
+  private boolean sent(Link link, byte[] frame) {
+    if (link == null || link.isClosed()) {
+      return false;
+    }
+    try {
+      link.send(Frames.fits(frame, link.sendLimit) ? frame : tooLarge(frame, link));
+      return true;
+    } catch (IOException e) {
+      return false;
+    }
+  }
+
+  /**
+   * Sends a reply towards its caller. When the route is broken (a link just failed and routes are
+   * being recomputed), tries again a few times over about half a second: a caller must not wait for
+   * its deadline because a reply met a stale route.
+   */
+  void deliver(UUID caller, byte[] frame, int attempt) {
+    if (sent(router.nextHop(caller), frame)) {
+      return;
+    }
+    if (attempt >= 6) {
+      LOG.log(Level.DEBUG, "reply to {0} dropped: no route", caller);
+      return;
+    }
+    try {
+      scheduler.timer().schedule(() -> deliver(caller, frame, attempt + 1), 10L << attempt,
+          TimeUnit.MILLISECONDS);
+    } catch (RejectedExecutionException closing) {
+      // The container is closing; its callers fail on their own.
+    }
   }
 }

@@ -2,11 +2,11 @@
  * Remote calls over links: CALL and REPLY frames (docs/protocol.md).
  *
  * <p>{@link dev.trade.internal.net.remote.RemoteCalls} is the calling side (request ids, pending
- * calls, waiting for the reply) and passes on frames addressed to other containers;
+ * calls, waiting for the reply), passes on frames addressed to other containers and takes
+ * replies back to their callers, also when a route has just broken;
  * {@link dev.trade.internal.net.remote.CallServer} is the providing side: it decodes a CALL,
  * runs it through the {@link dev.trade.internal.call.Provider}'s host chain and answers with
- * exactly one REPLY, whatever happens; the {@link dev.trade.internal.net.remote.ReplySender}
- * takes replies back to their callers, also when a route has just broken;
+ * exactly one REPLY, whatever happens, through the calls' way back;
  * {@link dev.trade.internal.net.remote.Deadlines} fails the calls whose deadline passed.
  *
  * <p>Threads: calls and replies run on the threads that read links (never on the control

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trade.TRADEContainer;
+import dev.trade.testing.Hubs;
 import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
@@ -109,8 +110,7 @@ class HandshakeTest {
     // 100 characters of 3 bytes each: 300 bytes of UTF-8, more than a str8 holds.
     String name = "\u2603".repeat(100);
     IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
-        () -> TRADEContainer.builder().name(name).property("STARTACCEPTINGCONNECTIONS", "true")
-            .property("SERVERIPS", "127.0.0.1@0").build());
+        () -> Hubs.hubBuilder(name).build());
     // The configuration refuses it first, naming the key and the limit.
     assertTrue(e.getMessage().startsWith("CONTAINERNAME="), e.getMessage());
     assertTrue(e.getMessage().endsWith("expected a name of at most 255 bytes without control"

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import dev.trade.internal.time.Scheduler;
 import java.io.DataInputStream;
 import java.io.IOException;
 import java.net.InetAddress;
@@ -94,7 +95,8 @@ class HeartbeatTest {
           null), true, 1 << 20));
     }
     // Beats come from the test only, at the times it passes: none is scheduled.
-    heartbeat = new Heartbeat(links, Duration.ofMillis(1000), Duration.ofMillis(3000), timer, workers);
+    heartbeat = new Heartbeat(links, Duration.ofMillis(1000), Duration.ofMillis(3000), Scheduler.of(timer),
+        workers);
     started = System.nanoTime();
     heartbeat.started(started);
   }
@@ -185,7 +187,7 @@ class HeartbeatTest {
     };
     try {
       Heartbeat beats = new Heartbeat(links, Duration.ofMillis(1000), Duration.ofMillis(3000),
-          recording, workers);
+          Scheduler.of(recording), workers);
       beats.started(started);
       quietSince(started);
       beats.beat(started + 1_000 * MS);

@@ -7,12 +7,11 @@ import dev.trade.internal.net.link.Frames;
 import dev.trade.internal.net.link.Link;
 import dev.trade.internal.net.link.LoopbackLinks;
 import dev.trade.internal.net.link.Wire;
+import dev.trade.internal.time.Scheduler;
 import java.io.DataInputStream;
 import java.io.IOException;
 import java.io.InputStream;
 import java.util.UUID;
-import java.util.concurrent.Executors;
-import java.util.concurrent.ScheduledExecutorService;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 
@@ -24,13 +23,13 @@ import org.junit.jupiter.api.Test;
 class ReplyWayBackTest {
   private final UUID self = UUID.randomUUID();
   private final UUID caller = UUID.randomUUID();
-  private final ScheduledExecutorService timer = Executors.newSingleThreadScheduledExecutor();
+  private final Scheduler timer = Scheduler.system("test");
   private final LoopbackLinks loopback = new LoopbackLinks();
 
   @AfterEach
   void close() throws IOException {
     loopback.close();
-    timer.shutdownNow();
+    timer.close();
   }
 
   /** A CALL payload from the caller to this container: the routing header and a request id. */
@@ -47,8 +46,8 @@ class ReplyWayBackTest {
     InputStream[] atRoute = new InputStream[1];
     Link cameBy = loopback.link(UUID.randomUUID(), "came-by", atCameBy);
     Link route = loopback.link(UUID.randomUUID(), "route", atRoute);
-    ReplySender replies = new ReplySender(self, container -> container.equals(caller) ? route : null, timer,
-        1 << 20);
+    RemoteCalls replies = new RemoteCalls(self, null,
+        container -> container.equals(caller) ? route : null, null, timer, 1 << 20);
     byte[] call = call();
     byte[] frame = Frames.finish(replies.replyStart(call, Wire.OK));
 
