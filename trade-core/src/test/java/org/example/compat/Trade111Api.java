@@ -111,6 +111,27 @@ public class Trade111Api {
     }
   }
 
+  /** Hooks (#37), and the TRADE paper's string form of them. */
+  void hooks(TRADEServiceInfo wrapper, TRADEServiceInfo target, String serviceName,
+      String[] serviceArgsClasses, TRADEServiceConstraints constr) {
+    try {
+      TRADE.beforeService(wrapper, target);
+    } catch (TRADEException e) {
+      report(e);
+    }
+    try {
+      TRADE.afterService(wrapper, target);
+    } catch (TRADEException e) {
+      report(e);
+    }
+    try {
+      TRADE.afterService("addObservedOutput", new String[] {Object[].class.getName()},
+          new TRADEServiceConstraints(), serviceName, serviceArgsClasses, constr);
+    } catch (TRADEException e) {
+      report(e);
+    }
+  }
+
   /** Constraints: every builder method, chained and as separate statements. */
   void constraints() {
     TRADEServiceConstraints c = new TRADEServiceConstraints()
@@ -204,11 +225,6 @@ public class Trade111Api {
    *         TRADE.registerNotificationNowOrWhenJoined(listener, c, "joined"); }
    *     catch (TRADEException e) { report(e); }
    *   }
-   *
-   * Hooks (#37):
-   *
-   *   try { TRADE.beforeService(wrapper, target); } catch (TRADEException e) { report(e); }
-   *   try { TRADE.afterService(wrapper, target); } catch (TRADEException e) { report(e); }
    *
    * Locks (#38):
    *

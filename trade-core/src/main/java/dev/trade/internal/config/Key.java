@@ -41,7 +41,9 @@ enum Key {
   DISCOVERYINTERFACES("", ValueType.INTERFACES),
   DISCOVERYCLOCKSKEW("30000", ValueType.MILLIS_OR_ZERO),
   SERIALIZATIONALLOWLIST("", ValueType.ALLOW_LIST),
-  MAXFRAMESIZE("67108864", ValueType.FRAME_SIZE);
+  MAXFRAMESIZE("67108864", ValueType.FRAME_SIZE),
+  HOOKTIMEOUT("1000", ValueType.MILLIS),
+  HOOKSYSTEMSERVICES("false", ValueType.BOOL);
 
   /** Keys TRADE used to read that are accepted and ignored, so that old files still load. */
   static final Set<String> LEGACY = Set.of("RUNWEBSERVER");

@@ -328,6 +328,16 @@ public final class Settings {
     return (Integer) values.get(Key.MAXFRAMESIZE);
   }
 
+  /** HOOKTIMEOUT: the longest a synchronous hook may delay a call; positive. */
+  public Duration hookTimeout() {
+    return duration(Key.HOOKTIMEOUT);
+  }
+
+  /** HOOKSYSTEMSERVICES: whether hooks may wrap this container's services of the reserved group. */
+  public boolean hookSystemServices() {
+    return bool(Key.HOOKSYSTEMSERVICES);
+  }
+
   /**
    * Every key with its canonical text, in canonical order (TRADE's keys, then ours). The texts
    * load back into equal settings. CREDENTIALS appears in clear: do not log this map.

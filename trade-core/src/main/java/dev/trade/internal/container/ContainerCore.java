@@ -19,6 +19,9 @@ import dev.trade.internal.codec.Codec;
 import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.codec.Limits;
 import dev.trade.internal.config.Settings;
+import dev.trade.internal.hooks.HookClient;
+import dev.trade.internal.hooks.HookPath;
+import dev.trade.internal.hooks.Hooks;
 import dev.trade.internal.net.Network;
 import dev.trade.internal.notify.NotificationClient;
 import dev.trade.internal.notify.NotificationService;
@@ -52,7 +55,7 @@ import java.util.function.Function;
  * the host chain ({@link #hostLinks}) runs in the container that provides the service, so that it
  * sees calls from everywhere.
  *
- * <p>At start it registers its system providers (the notification service) in the reserved group
+ * <p>At start it registers its system providers (the notification and hook services) in the reserved group
  * {@link SystemGroup#NAME}, before networking starts, so that the first table it replicates holds
  * them. This class is safe for concurrent use.
  */
@@ -79,6 +82,7 @@ public final class ContainerCore implements ServiceCaller {
   private volatile boolean closed;
   private final Notifications notifications;
   private final NotificationClient notificationClient;
+  private final Hooks hooks;
   /** Runs local asynchronous calls and decodes remote replies of asynchronous calls; lazily made. */
   private ExecutorService asyncPool; // Guarded by this.
 
@@ -107,6 +111,8 @@ public final class ContainerCore implements ServiceCaller {
     this.codec = new Codec(allowList, limits, infos);
     this.copier = settings.copyDataForLocalInvokes() ? codec::copy : null;
     this.defaultTimeoutNanos = settings.callTimeout().toNanos();
+    this.hooks = new Hooks(registry, this, infos, constraints, settings.hookTimeout(),
+        settings.hookSystemServices(), name);
     this.hostChain = new CallChain(hostLinks(), new LocalInvoker(registry));
     this.remote = new RemoteCaller(allowList, () -> network);
     this.self = Caller.of(uuid);
@@ -130,8 +136,9 @@ public final class ContainerCore implements ServiceCaller {
         }, constraints, name);
     try {
       registerSystem(new NotificationService(notifications, infos));
+      registerSystem(hooks.service());
     } catch (TRADEException e) {
-      throw new IllegalStateException("the notification service cannot be registered", e);
+      throw new IllegalStateException("a system service cannot be registered", e);
     }
     if (networked(settings)) {
       network = startNetwork();
@@ -196,6 +203,11 @@ public final class ContainerCore implements ServiceCaller {
   /** The requester's side of notifications (the static API's client of the notification services). */
   public NotificationClient notifications() {
     return notificationClient;
+  }
+
+  /** The requester's side of hooks (the static API's client of the hook services). */
+  public HookClient hooks() {
+    return hooks.client();
   }
 
   /** See {@link Registry#deregister}. */
@@ -295,16 +307,18 @@ public final class ContainerCore implements ServiceCaller {
    * The caller half, whose one job is routing: a service of this container goes through the host
    * chain here ({@link #callLocal}), any other to the {@link RemoteCaller}, which hands it to the
    * network; the host chain of the providing container runs it there. The arguments are
-   * normalized and counted once, here, for both ways.
+   * normalized and counted once, here, for both ways. A call made while a hook runs on this
+   * thread carries the hooks running on its path ({@link HookPath}).
    */
   @Override
   public <T> T call(ServiceDescriptor d, Class<T> returnType, Object[] args, long timeoutNanos)
       throws TRADEException {
     Object[] normalized = Arguments.normalize(d, args);
     long timeout = timeoutNanos > 0 ? timeoutNanos : defaultTimeoutNanos;
+    CallContext context = HookPath.current();
     return d.containerId().equals(id)
-        ? callLocal(d, returnType, normalized, timeout)
-        : remote.call(d, returnType, normalized, CallContext.EMPTY, timeout);
+        ? callLocal(d, returnType, normalized, timeout, context)
+        : remote.call(d, returnType, normalized, context, timeout);
   }
 
   /**
@@ -320,16 +334,17 @@ public final class ContainerCore implements ServiceCaller {
     try {
       Object[] normalized = Arguments.normalize(d, args);
       long timeout = timeoutNanos > 0 ? timeoutNanos : defaultTimeoutNanos;
+      CallContext context = HookPath.current();
       if (d.containerId().equals(id)) {
         return CompletableFuture.supplyAsync(() -> {
           try {
-            return callLocal(d, returnType, normalized, timeout);
+            return callLocal(d, returnType, normalized, timeout, context);
           } catch (TRADEException e) {
             throw new CompletionException(e);
           }
         }, asyncPool());
       }
-      return remote.callAsync(d, returnType, normalized, CallContext.EMPTY, timeout, asyncPool());
+      return remote.callAsync(d, returnType, normalized, context, timeout, asyncPool());
     } catch (TRADEException e) {
       return CompletableFuture.failedFuture(e);
     }
@@ -352,12 +367,12 @@ public final class ContainerCore implements ServiceCaller {
    * fill it in this order: {@code access → locks → hooks → invoke} (access control first, so that
    * nothing else sees a refused call; hooks last, so that they see only calls that will run).
    */
-  private static List<CallLink> hostLinks() {
-    return List.of(); // access, locks and hooks come with their features
+  private List<CallLink> hostLinks() {
+    return List.of(hooks.link()); // access and locks come before hooks with their features
   }
 
-  private <T> T callLocal(ServiceDescriptor d, Class<T> returnType, Object[] args, long timeout)
-      throws TRADEException {
+  private <T> T callLocal(ServiceDescriptor d, Class<T> returnType, Object[] args, long timeout,
+      CallContext context) throws TRADEException {
     LocalService s = registry.local(d.serviceId());
     if (s == null) {
       throw CallErrors.gone(d, "it was deregistered");
@@ -365,7 +380,7 @@ public final class ContainerCore implements ServiceCaller {
     Returns.check(d, returnType, s.returnType());
     if (copier == null) {
       return Returns.convert(d, returnType,
-          hostChain.call(Invocation.local(d, args, timeout, self, CallContext.EMPTY)));
+          hostChain.call(Invocation.local(d, args, timeout, self, context)));
     }
     ClassLoader providerLoader = s.target().getClass().getClassLoader();
     if (providerLoader == null) {
@@ -375,7 +390,7 @@ public final class ContainerCore implements ServiceCaller {
     for (int i = 0; i < args.length; i++) {
       copies[i] = copier.copy(args[i], providerLoader, s.declaredTypes());
     }
-    Object result = hostChain.call(Invocation.local(d, copies, timeout, self, CallContext.EMPTY));
+    Object result = hostChain.call(Invocation.local(d, copies, timeout, self, context));
     return Returns.convert(d, returnType,
         copier.copy(result, RemoteCaller.callerLoader(returnType), s.declaredTypes()));
   }
@@ -387,6 +402,7 @@ public final class ContainerCore implements ServiceCaller {
       // Notifications stop first: disconnecting makes every other container's services
       // unreachable from here, and reporting them as "left" would be false.
       notifications.close();
+      hooks.close();
       registry.deregisterAll();
       synchronized (this) {
         if (network != null) {

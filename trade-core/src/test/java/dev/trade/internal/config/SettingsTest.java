@@ -78,6 +78,8 @@ class SettingsTest {
     assertEquals(Duration.ofSeconds(30), d.discoveryClockSkew());
     assertEquals(List.of(), d.serializationAllowList());
     assertEquals(64 * 1024 * 1024, d.maxFrameSize());
+    assertEquals(Duration.ofSeconds(1), d.hookTimeout());
+    assertFalse(d.hookSystemServices());
   }
 
   @Test
@@ -90,7 +92,7 @@ class SettingsTest {
         "COPYDATAFORLOCALINVOKES", "KEEPTRYING", "NETWORKINTERFACE", "CALLTIMEOUT",
         "HEARTBEATINTERVAL", "FAILURETIMEOUT",
         "DISCOVERYRANGE", "DISCOVERYINTERFACES", "DISCOVERYCLOCKSKEW", "SERIALIZATIONALLOWLIST",
-        "MAXFRAMESIZE"), List.copyOf(map.keySet()));
+        "MAXFRAMESIZE", "HOOKTIMEOUT", "HOOKSYSTEMSERVICES"), List.copyOf(map.keySet()));
     assertEquals("33333", map.get("BROADCASTPORT"));
     assertEquals("", map.get("SERVERIPS"));
     assertEquals("localhost", map.get("DISCOVERYRANGE"));
@@ -237,7 +239,8 @@ class SettingsTest {
     assertFalse(text.contains("hunter2"), text);
     assertTrue(text.startsWith("Settings{CONTAINERNAME=, STARTDISCOVERY=false,"), text);
     assertTrue(text.contains(", CREDENTIALS=****, TRADESYSID=diarc,"), text);
-    assertTrue(text.endsWith(", MAXFRAMESIZE=67108864}"), text);
+    assertTrue(text.endsWith(", MAXFRAMESIZE=67108864, HOOKTIMEOUT=1000, HOOKSYSTEMSERVICES=false}"),
+        text);
     assertEquals("hunter2", Settings.defaults().with("CREDENTIALS", "hunter2").credentials());
   }
 
