@@ -508,6 +508,38 @@ public final class TRADE {
   }
 
   /**
+   * Starts the default container's call log: see {@link TRADEContainer#startCallLog}.
+   *
+   * @param file the file to append JSON lines to
+   * @param groups the groups whose services are logged; none: all
+   * @return the file's absolute path
+   * @throws TRADEException as {@link TRADEContainer#startCallLog}
+   */
+  public static String startCallLog(String file, String... groups) throws TRADEException {
+    return getDefaultContainer().startCallLog(file, groups);
+  }
+
+  /**
+   * Stops the default container's call log: see {@link TRADEContainer#stopCallLog}.
+   *
+   * @return whether one ran
+   * @throws TRADEException as {@link TRADEContainer#stopCallLog}
+   */
+  public static boolean stopCallLog() throws TRADEException {
+    return getDefaultContainer().stopCallLog();
+  }
+
+  /**
+   * The call statistics of every container known to the default container: see
+   * {@link TRADEContainer#getCallStatistics()}.
+   *
+   * @return one map per service
+   */
+  public static List<Map<String, Object>> getCallStatistics() {
+    return getDefaultContainer().getCallStatistics();
+  }
+
+  /**
    * Switches discovery on or off: see {@link TRADEContainer#setDiscovery(boolean)}.
    *
    * @param on whether to discover

@@ -620,7 +620,65 @@ public final class TRADEContainer implements AutoCloseable {
    */
   public List<Map<String, Object>> getHooks() {
     checkOpen();
-    return core.hooks().list();
+    return core.callEverywhere("listHooks");
+  }
+
+  /**
+   * Starts this container's call log: one JSON line per call of every service in any of
+   * {@code groups} (none: every service but the system services), in every container, now and as
+   * they join, written to {@code file} (rotated at {@code CALLLOGMAXBYTES} to {@code <file>.1}).
+   * It is built on asynchronous after hooks, so callers never wait for it; it also switches this
+   * container's call statistics on ({@link #getCallStatistics()}). The {@code CALLLOG} setting
+   * starts it with the container. See docs/hooks.md for the lines.
+   *
+   * @param file the file to append to; its directory must exist
+   * @param groups the groups whose services are logged; none: all
+   * @return the file's absolute path
+   * @throws TRADEBadArgumentsException a call log runs here already, or the file cannot be opened
+   * @throws TRADEException another failure of the call to this container's call log service
+   */
+  public String startCallLog(String file, String... groups) throws TRADEException {
+    Objects.requireNonNull(file, "file == null");
+    checkOpen();
+    return core.callSystem("startCallLog", String.class, file, new ArrayList<>(normalize(
+        groups == null ? List.of() : Arrays.asList(groups))), 0);
+  }
+
+  /**
+   * Stops this container's call log and removes its hooks everywhere.
+   *
+   * @return whether one ran
+   * @throws TRADEException a failure of the call to this container's call log service
+   */
+  public boolean stopCallLog() throws TRADEException {
+    checkOpen();
+    return core.callSystem("stopCallLog", Boolean.class);
+  }
+
+  /**
+   * Switches this container's call statistics on or off: while on, an observer of its host chain
+   * counts each of its services' calls, failures and durations (two clock reads per call).
+   *
+   * @param on whether to count
+   * @throws TRADEException a failure of the call to this container's call log service
+   */
+  public void setCallStatistics(boolean on) throws TRADEException {
+    checkOpen();
+    core.callSystem("setCallStatistics", void.class, on);
+  }
+
+  /**
+   * The call statistics of every container known here whose statistics are or were on: one map
+   * per service, with {@code service} (its signature), {@code container} (its name), {@code calls},
+   * {@code failures} (longs), {@code p50Micros} and {@code p99Micros} (doubles, within 12.5 %:
+   * the time the host chain spent on the call, hooks excluded). A container that cannot be
+   * reached is left out.
+   *
+   * @return the statistics, each container's by signature
+   */
+  public List<Map<String, Object>> getCallStatistics() {
+    checkOpen();
+    return core.callEverywhere("callStatistics");
   }
 
   private static TRADEServiceConstraints targetsOf(TRADEServiceConstraints targets) {

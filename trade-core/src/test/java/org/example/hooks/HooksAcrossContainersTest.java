@@ -29,9 +29,13 @@ class HooksAcrossContainersTest {
   @RegisterExtension final Hubs net = new Hubs();
 
   private static TRADEServiceInfo find(TRADEContainer c, String name, String group) {
-    TRADEServiceConstraints named = new TRADEServiceConstraints().name(name).inGroups(group);
-    Await.until(WAIT, () -> !c.getAvailableServices(named).isEmpty(), name + " in " + group);
-    return c.getAvailableServices(named).iterator().next();
+    return find(c, new TRADEServiceConstraints().name(name).inGroups(group));
+  }
+
+  /** The preferred service matching {@code wanted}, once {@code c} knows one. */
+  static TRADEServiceInfo find(TRADEContainer c, TRADEServiceConstraints wanted) {
+    Await.until(WAIT, () -> !c.getAvailableServices(wanted).isEmpty(), wanted.toString());
+    return c.getAvailableServices(wanted).iterator().next();
   }
 
   @Test

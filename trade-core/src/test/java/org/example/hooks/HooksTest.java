@@ -280,8 +280,8 @@ class HooksTest {
     TRADEBadArgumentsException shape = assertThrows(TRADEBadArgumentsException.class,
         () -> c.afterService(service(c, "notAWrapper"), service(c, "sayText")));
     assertEquals("Wrapper notAWrapper(java.lang.String)@bad cannot take a hook's call: it must take"
-        + " one Object[] (or Object[] and Throwable, to learn that the target threw)",
-        shape.getMessage());
+        + " one Object[] (or Object[] and Throwable, to learn that the target threw; or those and a"
+        + " Map, for the call's details)", shape.getMessage());
     assertThrows(TRADEBadArgumentsException.class,
         () -> c.beforeService(service(c, "afterWithFailure"), service(c, "sayText")));
     TRADEServiceInfo listHooks = c.getAvailableService(

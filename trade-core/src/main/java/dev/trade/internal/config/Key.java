@@ -43,7 +43,10 @@ enum Key {
   SERIALIZATIONALLOWLIST("", ValueType.ALLOW_LIST),
   MAXFRAMESIZE("67108864", ValueType.FRAME_SIZE),
   HOOKTIMEOUT("1000", ValueType.MILLIS),
-  HOOKSYSTEMSERVICES("false", ValueType.BOOL);
+  HOOKSYSTEMSERVICES("false", ValueType.BOOL),
+  CALLLOG("", ValueType.TEXT),
+  CALLLOGGROUPS("", ValueType.TEXT),
+  CALLLOGMAXBYTES("10485760", ValueType.FRAME_SIZE);
 
   /** Keys TRADE used to read that are accepted and ignored, so that old files still load. */
   static final Set<String> LEGACY = Set.of("RUNWEBSERVER");

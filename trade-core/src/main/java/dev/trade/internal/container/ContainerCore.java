@@ -32,6 +32,7 @@ import dev.trade.internal.registry.Query;
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
 import dev.trade.internal.system.SystemGroup;
+import dev.trade.internal.system.SystemServices;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.lang.System.Logger;
@@ -39,6 +40,7 @@ import java.lang.System.Logger.Level;
 import java.net.InetSocketAddress;
 import java.util.Collection;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.UUID;
 import java.util.concurrent.CompletableFuture;
@@ -112,7 +114,7 @@ public final class ContainerCore implements ServiceCaller {
     this.copier = settings.copyDataForLocalInvokes() ? codec::copy : null;
     this.defaultTimeoutNanos = settings.callTimeout().toNanos();
     this.hooks = new Hooks(registry, this, infos, constraints, settings.hookTimeout(),
-        settings.hookSystemServices(), name);
+        settings.hookSystemServices(), settings.callLogMaxBytes(), name);
     this.hostChain = new CallChain(hostLinks(), new LocalInvoker(registry));
     this.remote = new RemoteCaller(allowList, () -> network);
     this.self = Caller.of(uuid);
@@ -136,9 +138,19 @@ public final class ContainerCore implements ServiceCaller {
         }, constraints, name);
     try {
       registerSystem(new NotificationService(notifications, infos));
-      registerSystem(hooks.service());
+      for (Object service : hooks.services()) {
+        registerSystem(service);
+      }
     } catch (TRADEException e) {
       throw new IllegalStateException("a system service cannot be registered", e);
+    }
+    if (!settings.callLog().isEmpty()) {
+      try {
+        hooks.startCallLog(settings.callLog(), settings.callLogGroups());
+      } catch (TRADEException e) {
+        throw new IllegalArgumentException("CALLLOG=" + settings.callLog() + ": " + e.getMessage(),
+            e);
+      }
     }
     if (networked(settings)) {
       network = startNetwork();
@@ -208,6 +220,23 @@ public final class ContainerCore implements ServiceCaller {
   /** The requester's side of hooks (the static API's client of the hook services). */
   public HookClient hooks() {
     return hooks.client();
+  }
+
+  /**
+   * Calls this container's system service {@code name} like any service (through the host chain).
+   *
+   * @throws TRADEException the service's own refusal, or a failure of the call
+   */
+  public <T> T callSystem(String name, Class<T> returnType, Object... args) throws TRADEException {
+    return SystemServices.call(registry, this, id, name, returnType, args);
+  }
+
+  /**
+   * Calls system service {@code name}, which returns a list of maps, in every container known
+   * here, and joins the lists; a container that cannot be reached is left out.
+   */
+  public List<Map<String, Object>> callEverywhere(String name) {
+    return SystemServices.collect(registry, this, name);
   }
 
   /** See {@link Registry#deregister}. */

@@ -16,8 +16,11 @@ final class Hook {
   final Kind kind;
   final ServiceDescriptor wrapper;
   final ServiceDescriptor target;
-  /** The wrapper's second parameter, a {@code Throwable}, receives the target's failure. */
-  final boolean takesFailure;
+  /**
+   * The wrapper's parameters: 1, the array; 2, also the target's failure ({@code Throwable}); 3,
+   * also the call's details ({@code Map}: see docs/hooks.md).
+   */
+  final int parameters;
   /** The set hook this belongs to ({@code <container id>:set<n>}), or "" for a single hook. */
   final String set;
   final String requester;
@@ -31,12 +34,12 @@ final class Hook {
   final AtomicBoolean warned = new AtomicBoolean();
 
   Hook(String id, Kind kind, ServiceDescriptor wrapper, ServiceDescriptor target,
-      boolean takesFailure, String set, String requester) {
+      int parameters, String set, String requester) {
     this.id = id;
     this.kind = kind;
     this.wrapper = wrapper;
     this.target = target;
-    this.takesFailure = takesFailure;
+    this.parameters = parameters;
     this.set = set;
     this.requester = requester;
     this.key = HookPath.key(wrapper.containerId(), wrapper.serviceId());

@@ -11,9 +11,7 @@ import dev.trade.internal.registry.ServiceDescriptor;
 import dev.trade.internal.system.SystemServices;
 import java.lang.System.Logger;
 import java.lang.System.Logger.Level;
-import java.util.ArrayList;
 import java.util.List;
-import java.util.Map;
 import java.util.Objects;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ExecutorService;
@@ -103,9 +101,13 @@ public final class HookClient implements Registry.Listener {
    * @throws TRADEBadArgumentsException if {@code constraints} are not constraints
    */
   public int addSet(Kind kind, Object wrapper, Object constraints) throws TRADEException {
-    ServiceDescriptor w = describe(wrapper, "wrapper");
+    return addSet(kind, describe(wrapper, "wrapper"), query(constraints));
+  }
+
+  /** As {@link #addSet(Kind, Object, Object)}, with the wrapper and targets resolved. */
+  int addSet(Kind kind, ServiceDescriptor w, Query targets) {
     SetHook s = new SetHook(registry.containerId() + ":set" + nextSet.incrementAndGet(), kind, w,
-        query(constraints));
+        targets);
     // Listed before the first lookup: a service joining meanwhile is hooked twice at worst, and
     // adding a hook twice adds it once.
     sets.add(s);
@@ -124,8 +126,11 @@ public final class HookClient implements Registry.Listener {
    * @return whether there was one
    */
   public boolean removeSet(Kind kind, Object wrapper, Object constraints) throws TRADEException {
-    ServiceDescriptor w = describe(wrapper, "wrapper");
-    Query q = query(constraints);
+    return removeSet(kind, describe(wrapper, "wrapper"), query(constraints));
+  }
+
+  /** As {@link #removeSet(Kind, Object, Object)}, with the wrapper and targets resolved. */
+  boolean removeSet(Kind kind, ServiceDescriptor w, Query q) {
     boolean found = false;
     for (SetHook s : sets) {
       if (s.kind == kind && s.wrapper.sameService(w) && s.query.equals(q) && sets.remove(s)) {
@@ -141,24 +146,6 @@ public final class HookClient implements Registry.Listener {
       }
     }
     return found;
-  }
-
-  /** Every hook of every container known here, each container's in order of addition. */
-  public List<Map<String, Object>> list() {
-    List<Map<String, Object>> all = new ArrayList<>();
-    for (ServiceDescriptor d : SystemServices.everywhere(registry, "listHooks")) {
-      try {
-        for (Object m : SystemServices.call(caller, d, List.class)) {
-          @SuppressWarnings("unchecked")
-          Map<String, Object> hook = (Map<String, Object>) m;
-          all.add(hook);
-        }
-      } catch (TRADEException e) {
-        LOG.log(Level.DEBUG, "listing the hooks of container {0} failed: {1}", d.containerName(),
-            e.getMessage());
-      }
-    }
-    return all;
   }
 
   /** Called under the registry's lock: only records and hands work to this client's thread. */

@@ -8,6 +8,9 @@ import dev.trade.internal.call.ServiceCaller;
 import dev.trade.internal.hooks.HookTable.OnTarget;
 import java.lang.System.Logger;
 import java.lang.System.Logger.Level;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.RejectedExecutionException;
@@ -75,11 +78,13 @@ final class HookLink implements CallLink {
       if (hooks != null) {
         for (Hook h : hooks.before()) {
           if (!HookPath.holds(value, h.key)) {
-            callSync(h, call, value, arrayOf(call, 1), null);
+            callSync(h, call, value, new Object[] {arrayOf(call, 1)});
           }
         }
       }
       long started = o == null ? 0 : start(o, call);
+      boolean timed = hooks != null && hooks.timed();
+      long begun = timed ? System.nanoTime() : 0;
       Object result = null;
       TRADEException failure = null;
       try {
@@ -96,14 +101,16 @@ final class HookLink implements CallLink {
         end(o, call, started, failure);
       }
       if (hooks != null) {
+        Map<String, Object> details = timed ? details(call, System.nanoTime() - begun) : null;
         for (Hook h : hooks.after()) {
           if (!HookPath.holds(value, h.key)) {
             Object[] array = arrayOf(call, 2);
             array[array.length - 1] = failure == null ? result : null;
+            Object[] args = argumentsOf(h, array, failure, details);
             if (h.kind == Kind.AFTER_ASYNC) {
-              callAsync(h, call, value, array, failure);
+              callAsync(h, call, value, args);
             } else {
-              callSync(h, call, value, array, failure);
+              callSync(h, call, value, args);
             }
           }
         }
@@ -128,7 +135,27 @@ final class HookLink implements CallLink {
     return array;
   }
 
-  private void callSync(Hook h, Invocation call, String path, Object[] array, Throwable failure) {
+  /** What the wrapper takes: the array, the failure, the details (docs/hooks.md). */
+  private static Object[] argumentsOf(Hook h, Object[] array, Throwable failure,
+      Map<String, Object> details) {
+    return h.parameters == 1 ? new Object[] {array} : h.parameters == 2
+        ? new Object[] {array, failure} : new Object[] {array, failure, details};
+  }
+
+  /** The details an after wrapper of three parameters gets; docs/hooks.md names the keys. */
+  private static Map<String, Object> details(Invocation call, long nanos) {
+    Map<String, Object> m = new LinkedHashMap<>();
+    m.put("time", System.currentTimeMillis());
+    m.put("caller", call.caller().container().toString());
+    m.put("provider", call.service().containerId());
+    m.put("providerName", call.service().containerName());
+    m.put("service", call.service().signature());
+    m.put("nanos", nanos);
+    return Collections.unmodifiableMap(m); // shared by the call's wrappers
+
+  }
+
+  private void callSync(Hook h, Invocation call, String path, Object[] args) {
     CallContext inside = path == null ? h.solo : HookPath.inside(path, h.key);
     if (inside == null) {
       failed(h, call, "the call's hook path is too long to add its wrapper");
@@ -139,10 +166,10 @@ final class HookLink implements CallLink {
       failed(h, call, "the call's deadline passed");
       return;
     }
-    run(h, call.caller().container().toString(), inside, array, failure, timeout);
+    run(h, call.caller().container().toString(), inside, args, timeout);
   }
 
-  private void callAsync(Hook h, Invocation call, String path, Object[] array, Throwable failure) {
+  private void callAsync(Hook h, Invocation call, String path, Object[] args) {
     CallContext inside = path == null ? h.solo : HookPath.inside(path, h.key);
     if (inside == null) {
       failed(h, call, "the call's hook path is too long to add its wrapper");
@@ -150,16 +177,14 @@ final class HookLink implements CallLink {
     }
     String from = call.caller().container().toString();
     try {
-      pool().execute(() -> run(h, from, inside, array, failure, timeoutNanos));
+      pool().execute(() -> run(h, from, inside, args, timeoutNanos));
     } catch (RejectedExecutionException e) {
       failed(h, from, "dropped: the asynchronous hooks' queue of " + QUEUE + " is full"
           + " or the container is closing");
     }
   }
 
-  private void run(Hook h, String from, CallContext inside, Object[] array, Throwable failure,
-      long timeout) {
-    Object[] args = h.takesFailure ? new Object[] {array, failure} : new Object[] {array};
+  private void run(Hook h, String from, CallContext inside, Object[] args, long timeout) {
     CallContext outer = HookPath.enter(inside);
     try {
       caller.call(h.wrapper, Object.class, args, timeout);

@@ -30,6 +30,7 @@ public final class HookService {
   static final long KNOWN_WAIT_MS = 5000;
   private static final String ARRAY = "java.lang.Object[]";
   private static final String THROWABLE = "java.lang.Throwable";
+  private static final String MAP = "java.util.Map";
 
   private final HookTable table;
   private final Registry registry;
@@ -67,7 +68,7 @@ public final class HookService {
     ServiceDescriptor w = describe(wrapper, "wrapper");
     ServiceDescriptor t = describe(target, "target");
     checkTarget(t);
-    boolean takesFailure = checkWrapper(k, w);
+    int parameters = checkWrapper(k, w);
     try {
       if (!table.awaitKnown(registry, w, KNOWN_WAIT_MS)) {
         throw unknown(w);
@@ -81,7 +82,7 @@ public final class HookService {
     // Under the registry's lock: a wrapper or target that leaves meanwhile cannot leave a hook.
     registry.runLocked(() -> {
       if (registry.entry(w) != null && registry.local(t.serviceId()) != null) {
-        added[0] = table.add(k, w, t, takesFailure, set == null ? "" : set,
+        added[0] = table.add(k, w, t, parameters, set == null ? "" : set,
             requester == null ? "" : requester);
       }
     });
@@ -146,18 +147,20 @@ public final class HookService {
     }
   }
 
-  /** Returns whether the wrapper takes the target's failure as a second parameter. */
-  private static boolean checkWrapper(Kind k, ServiceDescriptor w) throws TRADEBadArgumentsException {
+  /** Returns how many of the parameters a hook passes the wrapper takes (see {@link Hook}). */
+  private static int checkWrapper(Kind k, ServiceDescriptor w) throws TRADEBadArgumentsException {
     List<String> p = w.parameterTypeNames();
     if (p.size() == 1 && p.get(0).equals(ARRAY)) {
-      return false;
+      return 1;
     }
-    if (k.isAfter() && p.size() == 2 && p.get(0).equals(ARRAY) && p.get(1).equals(THROWABLE)) {
-      return true;
+    if (k.isAfter() && p.size() >= 2 && p.size() <= 3 && p.get(0).equals(ARRAY)
+        && p.get(1).equals(THROWABLE) && (p.size() == 2 || p.get(2).equals(MAP))) {
+      return p.size();
     }
     throw new TRADEBadArgumentsException("Wrapper " + Hook.where(w) + " cannot take a hook's"
         + " call: it must take one Object[]" + (k.isAfter()
-            ? " (or Object[] and Throwable, to learn that the target threw)" : ""));
+            ? " (or Object[] and Throwable, to learn that the target threw; or those and a Map,"
+                + " for the call's details)" : ""));
   }
 
   private TRADEServiceUnavailableException unknown(ServiceDescriptor w) {

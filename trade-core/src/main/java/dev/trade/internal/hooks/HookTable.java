@@ -7,8 +7,10 @@ import java.lang.System.Logger;
 import java.lang.System.Logger.Level;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Predicate;
 
@@ -24,7 +26,7 @@ final class HookTable implements Registry.Listener {
   private static final Logger LOG = System.getLogger("dev.trade.hooks");
 
   /** The hooks of one target, each array in order of addition. Immutable. */
-  record OnTarget(Hook[] before, Hook[] after) {}
+  record OnTarget(Hook[] before, Hook[] after, boolean timed) {}
 
   private final String containerId;
   // Guarded by this: every hook, in order of addition.
@@ -73,13 +75,13 @@ final class HookTable implements Registry.Listener {
    * twice does not call the wrapper twice).
    */
   synchronized Hook add(Kind kind, ServiceDescriptor wrapper, ServiceDescriptor target,
-      boolean takesFailure, String set, String requester) {
+      int parameters, String set, String requester) {
     for (Hook h : all) {
       if (h.same(kind, wrapper, target)) {
         return h;
       }
     }
-    Hook h = new Hook(containerId + ":" + ++nextId, kind, wrapper, target, takesFailure, set,
+    Hook h = new Hook(containerId + ":" + ++nextId, kind, wrapper, target, parameters, set,
         requester);
     all.add(h);
     publish();
@@ -123,7 +125,11 @@ final class HookTable implements Registry.Listener {
   private void publish() {
     Map<Long, List<Hook>> before = new HashMap<>();
     Map<Long, List<Hook>> after = new HashMap<>();
+    Set<Long> timed = new HashSet<>();
     for (Hook h : all) {
+      if (h.parameters == 3) {
+        timed.add(h.target.serviceId());
+      }
       (h.kind == Kind.BEFORE ? before : after)
           .computeIfAbsent(h.target.serviceId(), k -> new ArrayList<>()).add(h);
     }
@@ -132,7 +138,7 @@ final class HookTable implements Registry.Listener {
       long t = h.target.serviceId();
       m.computeIfAbsent(t, k -> new OnTarget(
           before.getOrDefault(k, List.of()).toArray(new Hook[0]),
-          after.getOrDefault(k, List.of()).toArray(new Hook[0])));
+          after.getOrDefault(k, List.of()).toArray(new Hook[0]), timed.contains(k)));
     }
     byTarget = Map.copyOf(m);
   }

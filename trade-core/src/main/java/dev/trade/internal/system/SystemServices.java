@@ -8,8 +8,11 @@ import dev.trade.internal.registry.Entry;
 import dev.trade.internal.registry.Query;
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
+import java.lang.System.Logger;
+import java.lang.System.Logger.Level;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 
 /**
@@ -19,6 +22,8 @@ import java.util.Set;
 public final class SystemServices {
   private static final Query SYSTEM = new Query(null, null, null, Set.of(SystemGroup.NAME),
       Set.of(), false, null, null, Set.of(), List.of(), List.of());
+
+  private static final Logger LOG = System.getLogger("dev.trade.registry");
 
   private SystemServices() {}
 
@@ -52,6 +57,29 @@ public final class SystemServices {
           + " is not known here, or provides no " + name + " in group " + SystemGroup.NAME);
     }
     return call(caller, d, returnType, args);
+  }
+
+  /**
+   * Calls system service {@code name}, which returns a list of maps, in every container known
+   * here, and joins the lists in preference order of the containers; a container that cannot be
+   * reached is left out (logged at DEBUG).
+   */
+  public static List<Map<String, Object>> collect(Registry registry, ServiceCaller caller,
+      String name) {
+    List<Map<String, Object>> all = new ArrayList<>();
+    for (ServiceDescriptor d : everywhere(registry, name)) {
+      try {
+        for (Object m : call(caller, d, List.class)) {
+          @SuppressWarnings("unchecked")
+          Map<String, Object> one = (Map<String, Object>) m;
+          all.add(one);
+        }
+      } catch (TRADEException e) {
+        LOG.log(Level.DEBUG, "{0} of container {1} failed: {2}", name, d.containerName(),
+            e.getMessage());
+      }
+    }
+    return all;
   }
 
   /** Calls system service {@code d}, unwrapping its own refusal as {@link #call} does. */

@@ -80,6 +80,9 @@ class SettingsTest {
     assertEquals(64 * 1024 * 1024, d.maxFrameSize());
     assertEquals(Duration.ofSeconds(1), d.hookTimeout());
     assertFalse(d.hookSystemServices());
+    assertEquals("", d.callLog());
+    assertEquals(List.of(), d.callLogGroups());
+    assertEquals(10 * 1024 * 1024, d.callLogMaxBytes());
   }
 
   @Test
@@ -92,7 +95,8 @@ class SettingsTest {
         "COPYDATAFORLOCALINVOKES", "KEEPTRYING", "NETWORKINTERFACE", "CALLTIMEOUT",
         "HEARTBEATINTERVAL", "FAILURETIMEOUT",
         "DISCOVERYRANGE", "DISCOVERYINTERFACES", "DISCOVERYCLOCKSKEW", "SERIALIZATIONALLOWLIST",
-        "MAXFRAMESIZE", "HOOKTIMEOUT", "HOOKSYSTEMSERVICES"), List.copyOf(map.keySet()));
+        "MAXFRAMESIZE", "HOOKTIMEOUT", "HOOKSYSTEMSERVICES", "CALLLOG", "CALLLOGGROUPS",
+        "CALLLOGMAXBYTES"), List.copyOf(map.keySet()));
     assertEquals("33333", map.get("BROADCASTPORT"));
     assertEquals("", map.get("SERVERIPS"));
     assertEquals("localhost", map.get("DISCOVERYRANGE"));
@@ -239,8 +243,8 @@ class SettingsTest {
     assertFalse(text.contains("hunter2"), text);
     assertTrue(text.startsWith("Settings{CONTAINERNAME=, STARTDISCOVERY=false,"), text);
     assertTrue(text.contains(", CREDENTIALS=****, TRADESYSID=diarc,"), text);
-    assertTrue(text.endsWith(", MAXFRAMESIZE=67108864, HOOKTIMEOUT=1000, HOOKSYSTEMSERVICES=false}"),
-        text);
+    assertTrue(text.endsWith(", MAXFRAMESIZE=67108864, HOOKTIMEOUT=1000, HOOKSYSTEMSERVICES=false,"
+        + " CALLLOG=, CALLLOGGROUPS=, CALLLOGMAXBYTES=10485760}"), text);
     assertEquals("hunter2", Settings.defaults().with("CREDENTIALS", "hunter2").credentials());
   }
 
