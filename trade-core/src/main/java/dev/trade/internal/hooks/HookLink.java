@@ -1,6 +1,7 @@
 package dev.trade.internal.hooks;
 
 import dev.trade.TRADEException;
+import dev.trade.TRADEServiceUnavailableException;
 import dev.trade.internal.call.CallContext;
 import dev.trade.internal.call.CallLink;
 import dev.trade.internal.call.Invocation;
@@ -189,6 +190,12 @@ final class HookLink implements CallLink {
     try {
       caller.call(h.wrapper, Object.class, args, timeout);
       h.calls.increment();
+    } catch (TRADEServiceUnavailableException e) {
+      // The wrapper left, or its container cannot be reached: when it left, the hook is removed
+      // and that is logged once; until then, only counted.
+      h.calls.increment();
+      h.failures.increment();
+      LOG.log(Level.DEBUG, "{0} failed on a call from container {1}: {2}", h, from, e.getMessage());
     } catch (TRADEException | RuntimeException e) {
       h.calls.increment();
       failed(h, from, e.getClass().getSimpleName() + ": " + e.getMessage());
