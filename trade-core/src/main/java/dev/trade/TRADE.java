@@ -557,6 +557,227 @@ public final class TRADE {
   }
 
   /**
+   * Calls {@code wrapper} before every call of {@code target}, system-wide: see
+   * {@link TRADEContainer#beforeService(TRADEServiceInfo, TRADEServiceInfo)}.
+   *
+   * @param wrapper the service called before the target; it takes one {@code Object[]}:
+   *     {@code [serviceName, arg1, ..., argN]}
+   * @param target the service instrumented, of any container
+   * @throws TRADEException as {@link TRADEContainer#beforeService(TRADEServiceInfo, TRADEServiceInfo)}
+   */
+  public static void beforeService(TRADEServiceInfo wrapper, TRADEServiceInfo target)
+      throws TRADEException {
+    getDefaultContainer().beforeService(wrapper, target);
+  }
+
+  /**
+   * Calls {@code wrapper} after every call of {@code target}, system-wide: see
+   * {@link TRADEContainer#afterService(TRADEServiceInfo, TRADEServiceInfo)}.
+   *
+   * @param wrapper the service called after the target; it takes one {@code Object[]}:
+   *     {@code [serviceName, arg1, ..., argN, result]}
+   * @param target the service instrumented, of any container
+   * @throws TRADEException as {@link TRADEContainer#beforeService(TRADEServiceInfo, TRADEServiceInfo)}
+   */
+  public static void afterService(TRADEServiceInfo wrapper, TRADEServiceInfo target)
+      throws TRADEException {
+    getDefaultContainer().afterService(wrapper, target);
+  }
+
+  /**
+   * An after hook whose wrapper the caller may not wait for: see
+   * {@link TRADEContainer#afterService(TRADEServiceInfo, TRADEServiceInfo, boolean)}.
+   *
+   * @param wrapper the service called after the target
+   * @param target the service instrumented, of any container
+   * @param asynchronous whether the caller's result does not wait for the wrapper
+   * @throws TRADEException as {@link TRADEContainer#beforeService(TRADEServiceInfo, TRADEServiceInfo)}
+   */
+  public static void afterService(TRADEServiceInfo wrapper, TRADEServiceInfo target,
+      boolean asynchronous) throws TRADEException {
+    getDefaultContainer().afterService(wrapper, target, asynchronous);
+  }
+
+  /**
+   * The TRADE paper's form of {@link #beforeService(TRADEServiceInfo, TRADEServiceInfo)}: see
+   * {@link TRADEContainer#beforeService(String, String[], TRADEServiceConstraints, String,
+   * String[], TRADEServiceConstraints)}.
+   *
+   * @param wrapperName the wrapper's name
+   * @param wrapperArgTypeNames the wrapper's parameter type names; null: any
+   * @param wrapperConstraints what the wrapper must also match; null: nothing more
+   * @param targetName the target's name
+   * @param targetArgTypeNames the target's parameter type names; null: any
+   * @param targetConstraints what the target must also match; null: nothing more
+   * @throws TRADEException {@link TRADEServiceNotFoundException} when no service matches a
+   *     description; otherwise as {@link #beforeService(TRADEServiceInfo, TRADEServiceInfo)}
+   */
+  public static void beforeService(String wrapperName, String[] wrapperArgTypeNames,
+      TRADEServiceConstraints wrapperConstraints, String targetName, String[] targetArgTypeNames,
+      TRADEServiceConstraints targetConstraints) throws TRADEException {
+    getDefaultContainer().beforeService(wrapperName, wrapperArgTypeNames, wrapperConstraints,
+        targetName, targetArgTypeNames, targetConstraints);
+  }
+
+  /**
+   * The TRADE paper's form of {@link #afterService(TRADEServiceInfo, TRADEServiceInfo)}:
+   * {@code TRADE.afterService("addObservedOutput", new String[] {Object[].class.getName()},
+   * new TRADEServiceConstraints(), serviceName, serviceArgsClasses, constraints)}.
+   *
+   * @param wrapperName the wrapper's name
+   * @param wrapperArgTypeNames the wrapper's parameter type names; null: any
+   * @param wrapperConstraints what the wrapper must also match; null: nothing more
+   * @param targetName the target's name
+   * @param targetArgTypeNames the target's parameter type names; null: any
+   * @param targetConstraints what the target must also match; null: nothing more
+   * @throws TRADEException as {@link #beforeService(String, String[], TRADEServiceConstraints,
+   *     String, String[], TRADEServiceConstraints)}
+   */
+  public static void afterService(String wrapperName, String[] wrapperArgTypeNames,
+      TRADEServiceConstraints wrapperConstraints, String targetName, String[] targetArgTypeNames,
+      TRADEServiceConstraints targetConstraints) throws TRADEException {
+    getDefaultContainer().afterService(wrapperName, wrapperArgTypeNames, wrapperConstraints,
+        targetName, targetArgTypeNames, targetConstraints);
+  }
+
+  /**
+   * Removes a before hook: see {@link TRADEContainer#removeBeforeService}.
+   *
+   * @param wrapper the hook's wrapper
+   * @param target the hook's target
+   * @return whether there was such a hook
+   * @throws TRADEException if the target's container cannot be reached
+   */
+  public static boolean removeBeforeService(TRADEServiceInfo wrapper, TRADEServiceInfo target)
+      throws TRADEException {
+    return getDefaultContainer().removeBeforeService(wrapper, target);
+  }
+
+  /**
+   * Removes an after hook: see {@link TRADEContainer#removeAfterService}.
+   *
+   * @param wrapper the hook's wrapper
+   * @param target the hook's target
+   * @return whether there was such a hook
+   * @throws TRADEException if the target's container cannot be reached
+   */
+  public static boolean removeAfterService(TRADEServiceInfo wrapper, TRADEServiceInfo target)
+      throws TRADEException {
+    return getDefaultContainer().removeAfterService(wrapper, target);
+  }
+
+  /**
+   * Hooks {@code wrapper} before every service matching {@code targets}, including those that join
+   * later: see {@link TRADEContainer#beforeServices}.
+   *
+   * @param wrapper the service called before each target
+   * @param targets the services to instrument
+   * @return how many services it covers now
+   * @throws TRADEException as {@link TRADEContainer#beforeServices}
+   */
+  public static int beforeServices(TRADEServiceInfo wrapper, TRADEServiceConstraints targets)
+      throws TRADEException {
+    return getDefaultContainer().beforeServices(wrapper, targets);
+  }
+
+  /**
+   * Hooks {@code wrapper} after every service matching {@code targets}, including those that join
+   * later: see {@link TRADEContainer#afterServices(TRADEServiceInfo, TRADEServiceConstraints)}.
+   *
+   * @param wrapper the service called after each target
+   * @param targets the services to instrument
+   * @return how many services it covers now
+   * @throws TRADEException as {@link TRADEContainer#beforeServices}
+   */
+  public static int afterServices(TRADEServiceInfo wrapper, TRADEServiceConstraints targets)
+      throws TRADEException {
+    return getDefaultContainer().afterServices(wrapper, targets);
+  }
+
+  /**
+   * As {@link #afterServices(TRADEServiceInfo, TRADEServiceConstraints)}, asynchronous if asked:
+   * see {@link TRADEContainer#afterServices(TRADEServiceInfo, TRADEServiceConstraints, boolean)}.
+   *
+   * @param wrapper the service called after each target
+   * @param targets the services to instrument
+   * @param asynchronous whether callers' results do not wait for the wrapper
+   * @return how many services it covers now
+   * @throws TRADEException as {@link TRADEContainer#beforeServices}
+   */
+  public static int afterServices(TRADEServiceInfo wrapper, TRADEServiceConstraints targets,
+      boolean asynchronous) throws TRADEException {
+    return getDefaultContainer().afterServices(wrapper, targets, asynchronous);
+  }
+
+  /**
+   * Removes a set of before hooks: see {@link TRADEContainer#removeBeforeServices}.
+   *
+   * @param wrapper the set's wrapper
+   * @param targets the set's constraints
+   * @return whether there was such a set
+   * @throws TRADEException if the wrapper is not a service info
+   */
+  public static boolean removeBeforeServices(TRADEServiceInfo wrapper,
+      TRADEServiceConstraints targets) throws TRADEException {
+    return getDefaultContainer().removeBeforeServices(wrapper, targets);
+  }
+
+  /**
+   * Removes a set of after hooks: see {@link TRADEContainer#removeAfterServices}.
+   *
+   * @param wrapper the set's wrapper
+   * @param targets the set's constraints
+   * @return whether there was such a set
+   * @throws TRADEException if the wrapper is not a service info
+   */
+  public static boolean removeAfterServices(TRADEServiceInfo wrapper,
+      TRADEServiceConstraints targets) throws TRADEException {
+    return getDefaultContainer().removeAfterServices(wrapper, targets);
+  }
+
+  /**
+   * The hooks of every container known to the default container: see
+   * {@link TRADEContainer#getHooks()}.
+   *
+   * @return one map per hook
+   */
+  public static List<Map<String, Object>> getHooks() {
+    return getDefaultContainer().getHooks();
+  }
+
+  /**
+   * Starts the default container's call log: see {@link TRADEContainer#startCallLog}.
+   *
+   * @param file the file to append JSON lines to
+   * @param groups the groups whose services are logged; none: all
+   * @return the file's absolute path
+   * @throws TRADEException as {@link TRADEContainer#startCallLog}
+   */
+  public static String startCallLog(String file, String... groups) throws TRADEException {
+    return getDefaultContainer().startCallLog(file, groups);
+  }
+
+  /**
+   * Stops the default container's call log: see {@link TRADEContainer#stopCallLog}.
+   *
+   * @return whether one ran
+   * @throws TRADEException as {@link TRADEContainer#stopCallLog}
+   */
+  public static boolean stopCallLog() throws TRADEException {
+    return getDefaultContainer().stopCallLog();
+  }
+
+  /**
+   * The call statistics of every container known to the default container: see
+   * {@link TRADEContainer#getCallStatistics()}.
+   *
+   * @return one map per service
+   */
+  public static List<Map<String, Object>> getCallStatistics() {
+    return getDefaultContainer().getCallStatistics();
+  }
+
+  /**
    * Switches discovery on or off: see {@link TRADEContainer#setDiscovery(boolean)}.
    *
    * @param on whether to discover

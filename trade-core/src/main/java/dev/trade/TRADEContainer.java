@@ -5,6 +5,7 @@ import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.config.LoggingConfig;
 import dev.trade.internal.config.Settings;
 import dev.trade.internal.container.ContainerCore;
+import dev.trade.internal.hooks.Kind;
 import dev.trade.internal.proxy.Proxies;
 import dev.trade.internal.registry.Entry;
 import dev.trade.internal.registry.LocalService;
@@ -12,6 +13,7 @@ import dev.trade.internal.registry.ServiceDescriptor;
 import dev.trade.internal.registry.Suggestions;
 import java.io.IOException;
 import java.io.InputStream;
+import dev.trade.internal.registry.Types;
 import java.lang.annotation.Annotation;
 import java.net.InetSocketAddress;
 import java.time.Duration;
@@ -538,6 +540,321 @@ public final class TRADEContainer implements AutoCloseable {
       }
     }
     return infos;
+  }
+
+  /**
+   * Calls {@code wrapper} before every call of {@code target}, wherever the call comes from (TRADE
+   * 1.1.1's {@code beforeService}): the hook is installed in the container that provides
+   * {@code target}, so it sees local, remote, forwarded and notification calls and calls made by
+   * other hooks. The wrapper is a service taking one {@code Object[]}: {@code [serviceName, arg1,
+   * ..., argN]}, an array of its own; it cannot change the arguments {@code target} receives (the
+   * argument objects themselves are shared within a container unless strict mode,
+   * {@code COPYDATAFORLOCALINVOKES}, is on: do not mutate them). The target waits for it, at most
+   * {@code HOOKTIMEOUT}; a wrapper that fails is logged and counted and never fails the call.
+   * Several hooks on one target run in the order they were added; adding the same hook again
+   * changes nothing. See docs/hooks.md.
+   *
+   * @param wrapper the service called before the target; it takes one {@code Object[]}
+   * @param target the service instrumented, of any container
+   * @throws TRADEBadArgumentsException the wrapper does not take one {@code Object[]}, or the target
+   *     is a system service its container does not let hooks wrap ({@code HOOKSYSTEMSERVICES})
+   * @throws TRADEServiceUnavailableException the target's container cannot be reached, or the
+   *     target or wrapper is gone
+   * @throws TRADEException another failure of the call that installs the hook
+   */
+  public void beforeService(TRADEServiceInfo wrapper, TRADEServiceInfo target) throws TRADEException {
+    checkOpen();
+    core.hooks().add(Kind.BEFORE, wrapper, target);
+  }
+
+  /**
+   * Calls {@code wrapper} after every call of {@code target} and before its caller gets the result
+   * (TRADE 1.1.1's {@code afterService}); as {@link #beforeService(TRADEServiceInfo,
+   * TRADEServiceInfo)} otherwise. The wrapper's array is {@code [serviceName, arg1, ..., argN,
+   * result]}, the result {@code null} for a {@code void} target and for a call that threw; a
+   * wrapper taking {@code (Object[], Throwable)} also receives the failure the caller receives
+   * ({@code null} when the target returned), which is how a hook learns that the target threw.
+   *
+   * @param wrapper the service called after the target; it takes one {@code Object[]}, or an
+   *     {@code Object[]} and a {@code Throwable}
+   * @param target the service instrumented, of any container
+   * @throws TRADEException as {@link #beforeService(TRADEServiceInfo, TRADEServiceInfo)}
+   */
+  public void afterService(TRADEServiceInfo wrapper, TRADEServiceInfo target) throws TRADEException {
+    afterService(wrapper, target, false);
+  }
+
+  /**
+   * As {@link #afterService(TRADEServiceInfo, TRADEServiceInfo)}; an asynchronous hook is called on
+   * the target container's hook pool after the call returned, so the caller never waits for it.
+   *
+   * @param wrapper the service called after the target
+   * @param target the service instrumented, of any container
+   * @param asynchronous whether the caller's result does not wait for the wrapper
+   * @throws TRADEException as {@link #beforeService(TRADEServiceInfo, TRADEServiceInfo)}
+   */
+  public void afterService(TRADEServiceInfo wrapper, TRADEServiceInfo target, boolean asynchronous)
+      throws TRADEException {
+    checkOpen();
+    core.hooks().add(asynchronous ? Kind.AFTER_ASYNC : Kind.AFTER, wrapper, target);
+  }
+
+  /**
+   * The TRADE paper's form of {@link #beforeService(TRADEServiceInfo, TRADEServiceInfo)}: wrapper
+   * and target are the preferred services matching a name, parameter types and constraints.
+   *
+   * @param wrapperName the wrapper's name
+   * @param wrapperArgTypeNames the wrapper's parameter type names ({@code Object[].class.getName()}
+   *     or {@code java.lang.Object[]}); null: any
+   * @param wrapperConstraints what the wrapper must also match; null: nothing more
+   * @param targetName the target's name
+   * @param targetArgTypeNames the target's parameter type names; null: any
+   * @param targetConstraints what the target must also match; null: nothing more
+   * @throws TRADEServiceNotFoundException no service matches the wrapper's or the target's
+   *     description
+   * @throws TRADEBadArgumentsException a parameter type name names no class known here
+   * @throws TRADEException as {@link #beforeService(TRADEServiceInfo, TRADEServiceInfo)}
+   */
+  public void beforeService(String wrapperName, String[] wrapperArgTypeNames,
+      TRADEServiceConstraints wrapperConstraints, String targetName, String[] targetArgTypeNames,
+      TRADEServiceConstraints targetConstraints) throws TRADEException {
+    beforeService(find(wrapperName, wrapperArgTypeNames, wrapperConstraints),
+        find(targetName, targetArgTypeNames, targetConstraints));
+  }
+
+  /**
+   * The TRADE paper's form of {@link #afterService(TRADEServiceInfo, TRADEServiceInfo)}:
+   * {@code afterService("addObservedOutput", new String[] {Object[].class.getName()}, null,
+   * serviceName, serviceArgs, constraints)}.
+   *
+   * @param wrapperName the wrapper's name
+   * @param wrapperArgTypeNames the wrapper's parameter type names; null: any
+   * @param wrapperConstraints what the wrapper must also match; null: nothing more
+   * @param targetName the target's name
+   * @param targetArgTypeNames the target's parameter type names; null: any
+   * @param targetConstraints what the target must also match; null: nothing more
+   * @throws TRADEException as {@link #beforeService(String, String[], TRADEServiceConstraints,
+   *     String, String[], TRADEServiceConstraints)}
+   */
+  public void afterService(String wrapperName, String[] wrapperArgTypeNames,
+      TRADEServiceConstraints wrapperConstraints, String targetName, String[] targetArgTypeNames,
+      TRADEServiceConstraints targetConstraints) throws TRADEException {
+    afterService(find(wrapperName, wrapperArgTypeNames, wrapperConstraints),
+        find(targetName, targetArgTypeNames, targetConstraints));
+  }
+
+  /**
+   * Removes the before hook of {@code wrapper} on {@code target} (TRADE 1.1.1 has no removal).
+   *
+   * @param wrapper the hook's wrapper
+   * @param target the hook's target
+   * @return whether there was such a hook
+   * @throws TRADEServiceUnavailableException the target's container cannot be reached
+   * @throws TRADEException another failure of the call that removes the hook
+   */
+  public boolean removeBeforeService(TRADEServiceInfo wrapper, TRADEServiceInfo target)
+      throws TRADEException {
+    checkOpen();
+    return core.hooks().remove(Kind.BEFORE, wrapper, target);
+  }
+
+  /**
+   * Removes the after hook, synchronous or asynchronous, of {@code wrapper} on {@code target}.
+   *
+   * @param wrapper the hook's wrapper
+   * @param target the hook's target
+   * @return whether there was such a hook
+   * @throws TRADEException as {@link #removeBeforeService}
+   */
+  public boolean removeAfterService(TRADEServiceInfo wrapper, TRADEServiceInfo target)
+      throws TRADEException {
+    checkOpen();
+    boolean sync = core.hooks().remove(Kind.AFTER, wrapper, target);
+    return core.hooks().remove(Kind.AFTER_ASYNC, wrapper, target) || sync;
+  }
+
+  /**
+   * Calls {@code wrapper} before every call of every service matching {@code targets}, now and as
+   * services join, in any container, as DIARC's service tracker needs; the wrapper itself is never
+   * one of its targets. System services match only constraints that name the group
+   * {@code trade.system}, and only where their container allows it ({@code HOOKSYSTEMSERVICES}).
+   * A service that joins is covered from when its hook reaches its container, one call after this
+   * container learns of it; a target that refuses the hook or cannot be reached is logged and
+   * left out. The set lives in this container: it stops covering new services when this container
+   * closes, and its hooks end everywhere when its wrapper leaves.
+   *
+   * @param wrapper the service called before each target; it takes one {@code Object[]}
+   * @param targets the services to instrument
+   * @return how many services it covers now
+   * @throws TRADEServiceUnavailableException the wrapper is not known here
+   * @throws TRADEException another failure
+   */
+  public int beforeServices(TRADEServiceInfo wrapper, TRADEServiceConstraints targets)
+      throws TRADEException {
+    checkOpen();
+    return core.hooks().addSet(Kind.BEFORE, wrapper, targetsOf(targets));
+  }
+
+  /**
+   * As {@link #beforeServices}, after the calls: see {@link #afterService(TRADEServiceInfo,
+   * TRADEServiceInfo)}.
+   *
+   * @param wrapper the service called after each target
+   * @param targets the services to instrument
+   * @return how many services it covers now
+   * @throws TRADEException as {@link #beforeServices}
+   */
+  public int afterServices(TRADEServiceInfo wrapper, TRADEServiceConstraints targets)
+      throws TRADEException {
+    return afterServices(wrapper, targets, false);
+  }
+
+  /**
+   * As {@link #afterServices(TRADEServiceInfo, TRADEServiceConstraints)}, asynchronous if asked:
+   * see {@link #afterService(TRADEServiceInfo, TRADEServiceInfo, boolean)}.
+   *
+   * @param wrapper the service called after each target
+   * @param targets the services to instrument
+   * @param asynchronous whether callers' results do not wait for the wrapper
+   * @return how many services it covers now
+   * @throws TRADEException as {@link #beforeServices}
+   */
+  public int afterServices(TRADEServiceInfo wrapper, TRADEServiceConstraints targets,
+      boolean asynchronous) throws TRADEException {
+    checkOpen();
+    return core.hooks().addSet(asynchronous ? Kind.AFTER_ASYNC : Kind.AFTER, wrapper,
+        targetsOf(targets));
+  }
+
+  /**
+   * Removes the set hook that {@link #beforeServices} added here with this wrapper and constraints
+   * that match the same services, and its hooks in every container.
+   *
+   * @param wrapper the set's wrapper
+   * @param targets the set's constraints
+   * @return whether there was such a set
+   * @throws TRADEException if the wrapper is not a service info
+   */
+  public boolean removeBeforeServices(TRADEServiceInfo wrapper, TRADEServiceConstraints targets)
+      throws TRADEException {
+    checkOpen();
+    return core.hooks().removeSet(Kind.BEFORE, wrapper, targetsOf(targets));
+  }
+
+  /**
+   * Removes the set hook, synchronous or asynchronous, that {@link #afterServices} added here with
+   * this wrapper and constraints that match the same services, and its hooks everywhere.
+   *
+   * @param wrapper the set's wrapper
+   * @param targets the set's constraints
+   * @return whether there was such a set
+   * @throws TRADEException if the wrapper is not a service info
+   */
+  public boolean removeAfterServices(TRADEServiceInfo wrapper, TRADEServiceConstraints targets)
+      throws TRADEException {
+    checkOpen();
+    boolean sync = core.hooks().removeSet(Kind.AFTER, wrapper, targetsOf(targets));
+    return core.hooks().removeSet(Kind.AFTER_ASYNC, wrapper, targetsOf(targets)) || sync;
+  }
+
+  /**
+   * The hooks installed in every container known here, as their hook services list them: one
+   * map each with {@code id}, {@code kind} ({@code before}, {@code after}, {@code after-async}),
+   * {@code wrapper} and {@code target} ({@code signature@container}), {@code set} (the set hook's
+   * id, or empty), {@code requester}, {@code calls} and {@code failures}. A container that cannot
+   * be reached is left out.
+   *
+   * @return the hooks, each container's in order of addition
+   */
+  public List<Map<String, Object>> getHooks() {
+    checkOpen();
+    return core.callEverywhere("listHooks");
+  }
+
+  /**
+   * Starts this container's call log: one JSON line per call of every service in any of
+   * {@code groups} (none: every service but the system services), in every container, now and as
+   * they join, written to {@code file} (rotated at {@code CALLLOGMAXBYTES} to {@code <file>.1}).
+   * It is built on asynchronous after hooks, so callers never wait for it; it also switches this
+   * container's call statistics on ({@link #getCallStatistics()}). The {@code CALLLOG} setting
+   * starts it with the container. See docs/hooks.md for the lines.
+   *
+   * @param file the file to append to; its directory must exist
+   * @param groups the groups whose services are logged; none: all
+   * @return the file's absolute path
+   * @throws TRADEBadArgumentsException a call log runs here already, or the file cannot be opened
+   * @throws TRADEException another failure of the call to this container's call log service
+   */
+  public String startCallLog(String file, String... groups) throws TRADEException {
+    Objects.requireNonNull(file, "file == null");
+    checkOpen();
+    return core.callSystem("startCallLog", String.class, file, new ArrayList<>(normalize(
+        groups == null ? List.of() : Arrays.asList(groups))), 0);
+  }
+
+  /**
+   * Stops this container's call log and removes its hooks everywhere.
+   *
+   * @return whether one ran
+   * @throws TRADEException a failure of the call to this container's call log service
+   */
+  public boolean stopCallLog() throws TRADEException {
+    checkOpen();
+    return core.callSystem("stopCallLog", Boolean.class);
+  }
+
+  /**
+   * Switches this container's call statistics on or off: while on, an observer of its host chain
+   * counts each of its services' calls, failures and durations (two clock reads per call).
+   *
+   * @param on whether to count
+   * @throws TRADEException a failure of the call to this container's call log service
+   */
+  public void setCallStatistics(boolean on) throws TRADEException {
+    checkOpen();
+    core.callSystem("setCallStatistics", void.class, on);
+  }
+
+  /**
+   * The call statistics of every container known here whose statistics are or were on: one map
+   * per service, with {@code service} (its signature), {@code container} (its name), {@code calls},
+   * {@code failures} (longs), {@code p50Micros} and {@code p99Micros} (doubles, within 12.5 %:
+   * the time the host chain spent on the call, hooks excluded). A container that cannot be
+   * reached is left out.
+   *
+   * @return the statistics, each container's by signature
+   */
+  public List<Map<String, Object>> getCallStatistics() {
+    checkOpen();
+    return core.callEverywhere("callStatistics");
+  }
+
+  private static TRADEServiceConstraints targetsOf(TRADEServiceConstraints targets) {
+    return targets == null ? new TRADEServiceConstraints() : targets.copy();
+  }
+
+  /** The preferred service named {@code name} with those parameter types and constraints. */
+  private TRADEServiceInfo find(String name, String[] argTypeNames,
+      TRADEServiceConstraints constraints) throws TRADEException {
+    Objects.requireNonNull(name, "name == null");
+    TRADEServiceConstraints c = constraints == null ? new TRADEServiceConstraints()
+        : constraints.copy();
+    c.name(name);
+    if (argTypeNames != null) {
+      Class<?>[] types = new Class<?>[argTypeNames.length];
+      ClassLoader loader = Thread.currentThread().getContextClassLoader();
+      for (int i = 0; i < types.length; i++) {
+        types[i] = Types.resolve(Objects.requireNonNull(argTypeNames[i], "argTypeNames[" + i
+            + "] == null"), loader != null ? loader : TRADEContainer.class.getClassLoader());
+        if (types[i] == null) {
+          throw new TRADEBadArgumentsException("Parameter type '" + argTypeNames[i] + "' of "
+              + name + " names no class known here: give Class.getName() or getTypeName() of a"
+              + " class on the class path");
+        }
+      }
+      c.argTypes(types);
+    }
+    return getAvailableService(c);
   }
 
   /**

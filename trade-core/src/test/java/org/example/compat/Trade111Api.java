@@ -114,6 +114,27 @@ public class Trade111Api {
     }
   }
 
+  /** Hooks (#37), and the TRADE paper's string form of them. */
+  void hooks(TRADEServiceInfo wrapper, TRADEServiceInfo target, String serviceName,
+      String[] serviceArgsClasses, TRADEServiceConstraints constr) {
+    try {
+      TRADE.beforeService(wrapper, target);
+    } catch (TRADEException e) {
+      report(e);
+    }
+    try {
+      TRADE.afterService(wrapper, target);
+    } catch (TRADEException e) {
+      report(e);
+    }
+    try {
+      TRADE.afterService("addObservedOutput", new String[] {Object[].class.getName()},
+          new TRADEServiceConstraints(), serviceName, serviceArgsClasses, constr);
+    } catch (TRADEException e) {
+      report(e);
+    }
+  }
+
   /** Constraints: every builder method, chained and as separate statements. */
   void constraints() {
     TRADEServiceConstraints c = new TRADEServiceConstraints()
@@ -240,13 +261,4 @@ public class Trade111Api {
     catch (TRADEException e) { report(e); }
   }
 
-  /*
-   * TRADE 1.1.1 members not in this version yet, each with the issue that adds it. Uncomment a
-   * block when its issue lands.
-   *
-   * Hooks (#37):
-   *
-   *   try { TRADE.beforeService(wrapper, target); } catch (TRADEException e) { report(e); }
-   *   try { TRADE.afterService(wrapper, target); } catch (TRADEException e) { report(e); }
-   */
 }

@@ -17,12 +17,7 @@ public final class RobotPartMain {
   private RobotPartMain() {}
 
   public static void main(String[] args) throws Exception {
-    TRADEContainer.Builder builder = TRADEContainer.builder();
-    for (String a : Arrays.copyOfRange(args, 1, args.length)) {
-      int eq = a.indexOf('=');
-      builder.property(a.substring(0, eq), a.substring(eq + 1));
-    }
-    try (TRADEContainer container = builder.build()) {
+    try (TRADEContainer container = builder(Arrays.copyOfRange(args, 1, args.length)).build()) {
       container.registerAllServices(args[0].equals("battery") ? new Battery() : new Dock(container),
           "robot");
       System.out.println("READY " + container.getId());
@@ -32,6 +27,16 @@ public final class RobotPartMain {
       }
     }
     System.exit(0);
+  }
+
+  /** A builder with the {@code KEY=VALUE} settings of a process's arguments. */
+  static TRADEContainer.Builder builder(String... settings) {
+    TRADEContainer.Builder builder = TRADEContainer.builder();
+    for (String a : settings) {
+      int eq = a.indexOf('=');
+      builder.property(a.substring(0, eq), a.substring(eq + 1));
+    }
+    return builder;
   }
 
   public static final class Battery {

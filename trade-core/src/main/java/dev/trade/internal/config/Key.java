@@ -44,7 +44,12 @@ enum Key {
   MAXFRAMESIZE("67108864", ValueType.FRAME_SIZE),
   PRINCIPALSFILE("", ValueType.TEXT),
   PRINCIPAL("", ValueType.TEXT),
-  PROVIDERCLASSES("", ValueType.ALLOW_LIST);
+  PROVIDERCLASSES("", ValueType.ALLOW_LIST),
+  HOOKTIMEOUT("1000", ValueType.MILLIS),
+  HOOKSYSTEMSERVICES("false", ValueType.BOOL),
+  CALLLOG("", ValueType.TEXT),
+  CALLLOGGROUPS("", ValueType.TEXT),
+  CALLLOGMAXBYTES("10485760", ValueType.FRAME_SIZE);
 
   /** Keys TRADE used to read that are accepted and ignored, so that old files still load. */
   static final Set<String> LEGACY = Set.of("RUNWEBSERVER");

@@ -6,6 +6,7 @@ import java.lang.System.Logger.Level;
 import java.net.InetAddress;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.ArrayList;
 import java.util.Collections;
 import java.util.EnumMap;
 import java.util.LinkedHashMap;
@@ -345,6 +346,37 @@ public final class Settings {
   @SuppressWarnings("unchecked") // Key.PROVIDERCLASSES always parses to a List<String>
   public List<String> providerClasses() {
     return (List<String>) values.get(Key.PROVIDERCLASSES);
+  }
+
+  /** HOOKTIMEOUT: the longest a synchronous hook may delay a call; positive. */
+  public Duration hookTimeout() {
+    return duration(Key.HOOKTIMEOUT);
+  }
+
+  /** HOOKSYSTEMSERVICES: whether hooks may wrap this container's services of the reserved group. */
+  public boolean hookSystemServices() {
+    return bool(Key.HOOKSYSTEMSERVICES);
+  }
+
+  /** CALLLOG: the file the call log writes, started with the container; empty: no call log. */
+  public String callLog() {
+    return (String) values.get(Key.CALLLOG);
+  }
+
+  /** CALLLOGGROUPS: the groups whose services the call log covers; empty: every service. */
+  public List<String> callLogGroups() {
+    List<String> groups = new ArrayList<>();
+    for (String g : ((String) values.get(Key.CALLLOGGROUPS)).split(",")) {
+      if (!g.isBlank()) {
+        groups.add(g.trim());
+      }
+    }
+    return List.copyOf(groups);
+  }
+
+  /** CALLLOGMAXBYTES: the size at which the call log file is rotated. */
+  public int callLogMaxBytes() {
+    return (Integer) values.get(Key.CALLLOGMAXBYTES);
   }
 
   /**

@@ -20,6 +20,9 @@ import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.codec.Limits;
 import dev.trade.internal.config.Settings;
 import dev.trade.internal.lock.Locks;
+import dev.trade.internal.hooks.HookClient;
+import dev.trade.internal.hooks.HookPath;
+import dev.trade.internal.hooks.Hooks;
 import dev.trade.internal.net.Network;
 import dev.trade.internal.notify.NotificationClient;
 import dev.trade.internal.notify.NotificationService;
@@ -34,6 +37,7 @@ import dev.trade.internal.admin.Access;
 import dev.trade.internal.admin.AdminClient;
 import dev.trade.internal.admin.AdminService;
 import dev.trade.internal.time.Scheduler;
+import dev.trade.internal.system.SystemServices;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.lang.System.Logger;
@@ -63,7 +67,7 @@ import java.util.function.Function;
  * the host chain ({@link #hostLinks}) runs in the container that provides the service, so that it
  * sees calls from everywhere.
  *
- * <p>At start it registers its system providers (the notification service) in the reserved group
+ * <p>At start it registers its system providers (the notification and hook services) in the reserved group
  * {@link SystemGroup#NAME}, before networking starts, so that the first table it replicates holds
  * them. This class is safe for concurrent use.
  */
@@ -98,6 +102,7 @@ public final class ContainerCore implements ServiceCaller {
   /** The container's own providers (in the reserved group), which reset() leaves alone. */
   private final Set<Object> systemProviders =
       Collections.synchronizedSet(Collections.newSetFromMap(new IdentityHashMap<>()));
+  private final Hooks hooks;
   /** Runs local asynchronous calls and decodes remote replies of asynchronous calls; lazily made. */
   private ExecutorService asyncPool; // Guarded by this.
 
@@ -129,7 +134,9 @@ public final class ContainerCore implements ServiceCaller {
     this.access = Access.of(settings, id, name, registry);
     this.locks = new Locks(registry, this, infos, settings.failureTimeout(), settings.callTimeout(),
         name);
-    this.hostChain = new CallChain(hostLinks(access.link(), locks.link()),
+    this.hooks = new Hooks(registry, this, infos, constraints, settings.hookTimeout(),
+        settings.hookSystemServices(), settings.callLogMaxBytes(), name);
+    this.hostChain = new CallChain(hostLinks(access.link(), locks.link(), hooks.link()),
         new LocalInvoker(registry));
     this.adminClient = new AdminClient(registry, access, this::callWith);
     this.remote = new RemoteCaller(allowList, () -> network);
@@ -158,8 +165,19 @@ public final class ContainerCore implements ServiceCaller {
       locks.registered(registerSystem(locks.service()));
       registerSystem(new AdminService(new Administered(), access, settings.providerClasses(),
           System.currentTimeMillis()));
+      for (Object service : hooks.services()) {
+        registerSystem(service);
+      }
     } catch (TRADEException e) {
-      throw new IllegalStateException("the system services cannot be registered", e);
+      throw new IllegalStateException("a system service cannot be registered", e);
+    }
+    if (!settings.callLog().isEmpty()) {
+      try {
+        hooks.startCallLog(settings.callLog(), settings.callLogGroups());
+      } catch (TRADEException e) {
+        throw new IllegalArgumentException("CALLLOG=" + settings.callLog() + ": " + e.getMessage(),
+            e);
+      }
     }
     if (networked(settings)) {
       try {
@@ -249,6 +267,28 @@ public final class ContainerCore implements ServiceCaller {
   /** Locks: the requester's side behind the static API (taking, releasing, listing). */
   public Locks locks() {
     return locks;
+  }
+
+  /** The requester's side of hooks (the static API's client of the hook services). */
+  public HookClient hooks() {
+    return hooks.client();
+  }
+
+  /**
+   * Calls this container's system service {@code name} like any service (through the host chain).
+   *
+   * @throws TRADEException the service's own refusal, or a failure of the call
+   */
+  public <T> T callSystem(String name, Class<T> returnType, Object... args) throws TRADEException {
+    return SystemServices.call(registry, this, id, name, returnType, args);
+  }
+
+  /**
+   * Calls system service {@code name}, which returns a list of maps, in every container known
+   * here, and joins the lists; a container that cannot be reached is left out.
+   */
+  public List<Map<String, Object>> callEverywhere(String name) {
+    return SystemServices.collect(registry, this, name);
   }
 
   /** See {@link Registry#deregister}. */
@@ -365,14 +405,15 @@ public final class ContainerCore implements ServiceCaller {
    * The caller half, whose one job is routing: a service of this container goes through the host
    * chain here ({@link #callLocal}), any other to the {@link RemoteCaller}, which hands it to the
    * network; the host chain of the providing container runs it there. The arguments are
-   * normalized and counted once, here, for both ways.
+   * normalized and counted once, here, for both ways. A call made while a hook runs on this
+   * thread carries the hooks running on its path ({@link HookPath}).
    */
   @Override
   public <T> T call(ServiceDescriptor d, Class<T> returnType, Object[] args, long timeoutNanos)
       throws TRADEException {
     Object[] normalized = Arguments.normalize(d, args);
     long timeout = timeoutNanos > 0 ? timeoutNanos : defaultTimeoutNanos;
-    CallContext context = access.ownContext(d);
+    CallContext context = merged(access.ownContext(d), HookPath.current());
     return d.containerId().equals(id)
         ? callLocal(d, returnType, normalized, timeout, context)
         : remote.call(d, returnType, normalized, context, timeout);
@@ -396,8 +437,8 @@ public final class ContainerCore implements ServiceCaller {
       Class<T> returnType, Object[] args, long timeoutNanos) throws TRADEException {
     Object[] normalized = Arguments.normalize(d, args);
     long timeout = timeoutNanos > 0 ? timeoutNanos : defaultTimeoutNanos;
-    CallContext context =
-        merged(access.ownContext(d), locks.client().context(d, lock, waitForLock));
+    CallContext context = merged(merged(access.ownContext(d), HookPath.current()),
+        locks.client().context(d, lock, waitForLock));
     return d.containerId().equals(id)
         ? callLocal(d, returnType, normalized, timeout, context)
         : remote.call(d, returnType, normalized, context, timeout);
@@ -429,7 +470,7 @@ public final class ContainerCore implements ServiceCaller {
     try {
       Object[] normalized = Arguments.normalize(d, args);
       long timeout = timeoutNanos > 0 ? timeoutNanos : defaultTimeoutNanos;
-      CallContext context = access.ownContext(d);
+      CallContext context = merged(access.ownContext(d), HookPath.current());
       if (d.containerId().equals(id)) {
         return CompletableFuture.supplyAsync(() -> {
           try {
@@ -462,8 +503,8 @@ public final class ContainerCore implements ServiceCaller {
    * fill it in this order: {@code access → locks → hooks → invoke} (access control first, so that
    * nothing else sees a refused call; hooks last, so that they see only calls that will run).
    */
-  private static List<CallLink> hostLinks(CallLink access, CallLink locks) {
-    return List.of(access, locks); // hooks come with their feature
+  private static List<CallLink> hostLinks(CallLink access, CallLink locks, CallLink hooks) {
+    return List.of(access, locks, hooks);
   }
 
   private <T> T callLocal(ServiceDescriptor d, Class<T> returnType, Object[] args, long timeout,
@@ -623,6 +664,7 @@ public final class ContainerCore implements ServiceCaller {
       // unreachable from here, and reporting them as "left" would be false.
       notifications.close();
       locks.close();
+      hooks.close();
       registry.deregisterAll();
       synchronized (this) {
         if (network != null) {

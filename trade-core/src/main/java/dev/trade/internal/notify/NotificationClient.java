@@ -3,19 +3,17 @@ package dev.trade.internal.notify;
 import dev.trade.TRADEAccess;
 import dev.trade.TRADEBadArgumentsException;
 import dev.trade.TRADEException;
-import dev.trade.TRADEInvocationException;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceInfo;
 import dev.trade.TRADEServiceUnavailableException;
 import dev.trade.TRADETimeoutException;
 import dev.trade.internal.call.ServiceCaller;
 import dev.trade.internal.codec.InfoBinding;
-import dev.trade.internal.registry.Entry;
 import dev.trade.internal.registry.LocalService;
 import dev.trade.internal.registry.Query;
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
-import dev.trade.internal.system.SystemGroup;
+import dev.trade.internal.system.SystemServices;
 import java.lang.reflect.Method;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -45,9 +43,6 @@ import java.util.function.Function;
  * registered once its last such request is cancelled here. Safe for concurrent use.
  */
 public final class NotificationClient {
-  private static final Query SYSTEM = new Query(null, null, null, Set.of(SystemGroup.NAME), Set.of(),
-      false, null, null, Set.of(), List.of(), List.of());
-
   /** How listeners are registered and deregistered (this container's user registration). */
   public interface Registrar {
     void register(Object listener) throws TRADEException;
@@ -231,26 +226,7 @@ public final class NotificationClient {
   /** Calls system service {@code name} of container {@code containerId}. */
   private <T> T callSystem(String containerId, String name, Class<T> returnType, Object... args)
       throws TRADEException {
-    ServiceDescriptor d = null;
-    for (Entry e : registry.find(name, SYSTEM)) {
-      if (e.descriptor().containerId().equals(containerId)) {
-        d = e.descriptor();
-        break;
-      }
-    }
-    if (d == null) {
-      throw new TRADEServiceUnavailableException("Service not available: container " + containerId
-          + " is not known here, or provides no " + name + " in group " + SystemGroup.NAME);
-    }
-    try {
-      return caller.call(d, returnType, args, 0);
-    } catch (TRADEInvocationException e) {
-      // The request was refused in the container it was sent to: its own typed error is the answer.
-      if (e.getCause() instanceof TRADEException) {
-        throw (TRADEException) e.getCause();
-      }
-      throw e;
-    }
+    return SystemServices.call(registry, caller, containerId, name, returnType, args);
   }
 
   /** Registers {@code listener} if it is not; returns whether this call registered it. */

@@ -78,6 +78,11 @@ class SettingsTest {
     assertEquals(Duration.ofSeconds(30), d.discoveryClockSkew());
     assertEquals(List.of(), d.serializationAllowList());
     assertEquals(64 * 1024 * 1024, d.maxFrameSize());
+    assertEquals(Duration.ofSeconds(1), d.hookTimeout());
+    assertFalse(d.hookSystemServices());
+    assertEquals("", d.callLog());
+    assertEquals(List.of(), d.callLogGroups());
+    assertEquals(10 * 1024 * 1024, d.callLogMaxBytes());
   }
 
   @Test
@@ -90,7 +95,9 @@ class SettingsTest {
         "COPYDATAFORLOCALINVOKES", "KEEPTRYING", "NETWORKINTERFACE", "CALLTIMEOUT",
         "HEARTBEATINTERVAL", "FAILURETIMEOUT",
         "DISCOVERYRANGE", "DISCOVERYINTERFACES", "DISCOVERYCLOCKSKEW", "SERIALIZATIONALLOWLIST",
-        "MAXFRAMESIZE", "PRINCIPALSFILE", "PRINCIPAL", "PROVIDERCLASSES"), List.copyOf(map.keySet()));
+        "MAXFRAMESIZE", "PRINCIPALSFILE", "PRINCIPAL", "PROVIDERCLASSES", "HOOKTIMEOUT",
+        "HOOKSYSTEMSERVICES", "CALLLOG", "CALLLOGGROUPS", "CALLLOGMAXBYTES"),
+        List.copyOf(map.keySet()));
     assertEquals("33333", map.get("BROADCASTPORT"));
     assertEquals("", map.get("SERVERIPS"));
     assertEquals("localhost", map.get("DISCOVERYRANGE"));
@@ -238,7 +245,8 @@ class SettingsTest {
     assertTrue(text.startsWith("Settings{CONTAINERNAME=, STARTDISCOVERY=false,"), text);
     assertTrue(text.contains(", CREDENTIALS=****, TRADESYSID=diarc,"), text);
     assertTrue(text.endsWith(", MAXFRAMESIZE=67108864, PRINCIPALSFILE=, PRINCIPAL=****,"
-        + " PROVIDERCLASSES=}"), text);
+        + " PROVIDERCLASSES=, HOOKTIMEOUT=1000, HOOKSYSTEMSERVICES=false, CALLLOG=, CALLLOGGROUPS=,"
+        + " CALLLOGMAXBYTES=10485760}"), text);
     assertEquals("hunter2", Settings.defaults().with("CREDENTIALS", "hunter2").credentials());
     String principal = Settings.defaults().with("PRINCIPAL", "alice:hunter3").toString();
     assertFalse(principal.contains("hunter3"), principal);

@@ -130,6 +130,18 @@ class FrameExamplesTest {
     return Frames.finish(out);
   }
 
+  /**
+   * The same call made inside a hook whose wrapper is the hub's service 1: the reserved context
+   * key {@code trade.hooks} (docs/hooks.md) names the hooks running on the call's path.
+   */
+  private static byte[] callFrameInsideHook() throws Exception {
+    Registry registry = new Registry(ARM.toString(), "arm", "robot1");
+    ServiceDescriptor d = registry.register(new RobotArm(), List.of()).get(0).descriptor();
+    RemoteCalls hub = new RemoteCalls(HUB, codec(), null, null, null, 1 << 26);
+    return hub.callFrame(ARM, 1, d.serviceId(), 30_000, Arguments.normalize(d, new Object[] {3}),
+        CallContext.of(Map.of("trade.hooks", HUB + "/1")));
+  }
+
   /** The arm's successful reply to that call: {@code true}. */
   private static byte[] replyFrame() throws Exception {
     byte[] call = callFrame();
@@ -243,6 +255,11 @@ class FrameExamplesTest {
   @Test
   void lockedReplyExample() throws Exception {
     assertDocumented("reply-locked", lockedReplyFrame());
+  }
+
+  @Test
+  void callInsideHookExample() throws Exception {
+    assertDocumented("call-hooks", callFrameInsideHook());
   }
 
   @Test

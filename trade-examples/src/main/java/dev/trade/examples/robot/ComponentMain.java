@@ -17,7 +17,7 @@ import java.util.concurrent.CountDownLatch;
  *
  * <pre>
  * java -cp CLASSPATH dev.trade.examples.robot.ComponentMain --component arm|head|vision|nav|battery|planner|lookout
- *     [--name NAME] [--groups G1,G2] [--config FILE] [--verbose]
+ *     [--name NAME] [--groups G1,G2] [--config FILE] [--call-log FILE] [--verbose]
  * </pre>
  *
  * <ul>
@@ -29,6 +29,8 @@ import java.util.concurrent.CountDownLatch;
  *       services the planner uses (default {@code MyRobot}).
  *   <li>{@code --config}: a {@code trade.properties}; without it, TRADE's usual resolution
  *       ({@code -Dtrade.properties.path}, {@code TRADE_PROPERTIES_PATH}, class path, defaults).
+ *   <li>{@code --call-log}: write a call log of every call of the groups' services, in every
+ *       container, to FILE (JSON lines; docs/hooks.md).
  *   <li>{@code --verbose}: also print TRADE's INFO log lines (links, discovery).
  * </ul>
  *
@@ -45,6 +47,7 @@ public final class ComponentMain {
     String name = null;
     List<String> groups = List.of("MyRobot");
     Path config = null;
+    String callLog = null;
     boolean verbose = false;
     try {
       for (int i = 0; i < args.length; i++) {
@@ -53,6 +56,7 @@ public final class ComponentMain {
           case "--name" -> name = value(args, ++i);
           case "--groups" -> groups = groups(value(args, ++i));
           case "--config" -> config = Path.of(value(args, ++i));
+          case "--call-log" -> callLog = value(args, ++i);
           case "--verbose" -> verbose = true;
           case "--help" -> {
             System.out.println(usage());
@@ -77,6 +81,14 @@ public final class ComponentMain {
       System.err.println(e.getMessage());
       System.exit(2);
       return;
+    }
+    if (callLog != null) {
+      try {
+        System.out.println("call log: " + trade.startCallLog(callLog, groups.toArray(new String[0])));
+      } catch (TRADEException e) {
+        System.err.println("cannot start the call log: " + e.getMessage());
+        System.exit(2);
+      }
     }
     if (kind.equals("lookout")) {
       boolean done = new Lookout(trade, groups, System.out).run();
@@ -138,6 +150,6 @@ public final class ComponentMain {
 
   private static String usage() {
     return "usage: ComponentMain --component " + String.join("|", KINDS)
-        + " [--name NAME] [--groups G1,G2] [--config FILE] [--verbose]";
+        + " [--name NAME] [--groups G1,G2] [--config FILE] [--call-log FILE] [--verbose]";
   }
 }
