@@ -38,6 +38,7 @@ import java.io.UncheckedIOException;
 import java.lang.System.Logger;
 import java.lang.System.Logger.Level;
 import java.net.InetSocketAddress;
+import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
 import java.util.Map;
@@ -71,6 +72,8 @@ public final class ContainerCore implements ServiceCaller {
   private final Settings settings;
   private final Registry registry;
   private final CallChain hostChain;
+  /** The host chain without the hooks link, for calls no hook concerns ({@link #host}). */
+  private final CallChain bareChain;
   private final RemoteCaller remote;
   /** This container as the caller of its own local calls. */
   private final Caller self;
@@ -115,7 +118,11 @@ public final class ContainerCore implements ServiceCaller {
     this.defaultTimeoutNanos = settings.callTimeout().toNanos();
     this.hooks = new Hooks(registry, this, infos, constraints, settings.hookTimeout(),
         settings.hookSystemServices(), settings.callLogMaxBytes(), name);
-    this.hostChain = new CallChain(hostLinks(), new LocalInvoker(registry));
+    LocalInvoker invoker = new LocalInvoker(registry);
+    this.hostChain = new CallChain(hostLinks(), invoker);
+    List<CallLink> bare = new ArrayList<>(hostLinks());
+    bare.remove(hooks.link());
+    this.bareChain = new CallChain(bare, invoker);
     this.remote = new RemoteCaller(allowList, () -> network);
     this.self = Caller.of(uuid);
     this.notifications = new Notifications(registry, this, infos, constraints, name);
@@ -172,7 +179,7 @@ public final class ContainerCore implements ServiceCaller {
 
       @Override
       public Object invoke(Invocation call) throws TRADEException {
-        return hostChain.call(call);
+        return host(call);
       }
     });
     try {
@@ -400,6 +407,14 @@ public final class ContainerCore implements ServiceCaller {
     return List.of(hooks.link()); // access and locks come before hooks with their features
   }
 
+  /**
+   * Runs {@code call} through the host chain; a call no hook concerns skips the hooks link, which
+   * would have passed it on untouched (an extra link costs as much as the rest of the chain).
+   */
+  private Object host(Invocation call) throws TRADEException {
+    return hooks.concerns(call) ? hostChain.call(call) : bareChain.call(call);
+  }
+
   private <T> T callLocal(ServiceDescriptor d, Class<T> returnType, Object[] args, long timeout,
       CallContext context) throws TRADEException {
     LocalService s = registry.local(d.serviceId());
@@ -409,7 +424,7 @@ public final class ContainerCore implements ServiceCaller {
     Returns.check(d, returnType, s.returnType());
     if (copier == null) {
       return Returns.convert(d, returnType,
-          hostChain.call(Invocation.local(d, args, timeout, self, context)));
+          host(Invocation.local(d, args, timeout, self, context)));
     }
     ClassLoader providerLoader = s.target().getClass().getClassLoader();
     if (providerLoader == null) {
@@ -419,7 +434,7 @@ public final class ContainerCore implements ServiceCaller {
     for (int i = 0; i < args.length; i++) {
       copies[i] = copier.copy(args[i], providerLoader, s.declaredTypes());
     }
-    Object result = hostChain.call(Invocation.local(d, copies, timeout, self, context));
+    Object result = host(Invocation.local(d, copies, timeout, self, context));
     return Returns.convert(d, returnType,
         copier.copy(result, RemoteCaller.callerLoader(returnType), s.declaredTypes()));
   }
