@@ -32,8 +32,10 @@ final class HookTable implements Registry.Listener {
   // Guarded by this: every hook, in order of addition.
   private final List<Hook> all = new ArrayList<>();
   private long nextId; // Guarded by this.
+  /** The map of a table without hooks, compared by identity on every call. */
+  private static final Map<Long, OnTarget> NONE = Map.of();
   // Written under this' lock, read lock-free by every call.
-  private volatile Map<Long, OnTarget> byTarget = Map.of();
+  private volatile Map<Long, OnTarget> byTarget = NONE;
 
   /** Notified when services are added to the registry: {@link #awaitKnown} waits on it. */
   private final Object known = new Object();
@@ -67,7 +69,7 @@ final class HookTable implements Registry.Listener {
   /** The hooks of the local service {@code serviceId}, or null if it has none. */
   OnTarget of(long serviceId) {
     Map<Long, OnTarget> m = byTarget;
-    return m.isEmpty() ? null : m.get(serviceId);
+    return m == NONE ? null : m.get(serviceId);
   }
 
   /**
@@ -140,7 +142,7 @@ final class HookTable implements Registry.Listener {
           before.getOrDefault(k, List.of()).toArray(new Hook[0]),
           after.getOrDefault(k, List.of()).toArray(new Hook[0]), timed.contains(k)));
     }
-    byTarget = Map.copyOf(m);
+    byTarget = m.isEmpty() ? NONE : Map.copyOf(m);
   }
 
   /** Called under the registry's lock: only this table's own state changes here. */

@@ -2,6 +2,7 @@ package dev.trade.internal.hooks;
 
 import dev.trade.TRADEException;
 import dev.trade.internal.call.CallLink;
+import dev.trade.internal.call.Invocation;
 import dev.trade.internal.call.ServiceCaller;
 import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.registry.Query;
@@ -43,6 +44,15 @@ public final class Hooks {
   /** The link of the host chain, between locks and the invoker. */
   public CallLink link() {
     return link;
+  }
+
+  /**
+   * Whether {@code call} must pass the hooks link: false when it has no hooks, no hook path and
+   * no observer, so that the container can run it through its chain without the link. Cheap: two
+   * volatile reads and an empty-map check.
+   */
+  public boolean concerns(Invocation call) {
+    return link.concerns(call);
   }
 
   /** The system services to register in the reserved group: hooks, and the call log. */
