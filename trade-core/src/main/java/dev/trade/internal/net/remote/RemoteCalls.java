@@ -65,8 +65,11 @@ public final class RemoteCalls {
    * (10, 20, 40, 80 and 160 ms: 310 ms in all) before it is passed back all the same.
    */
   static final int ROUTE_WAITS = 5;
-  /** Calls passed on, beyond which those whose replies are no longer awaited are forgotten. */
-  private static final int MAX_PASSED_ON = 4096;
+  /**
+   * The most calls passed on whose replies are awaited at once; beyond it those no longer awaited
+   * are forgotten, and if none is, a call is answered "not available now" instead of passed on.
+   */
+  private static final int MAX_PASSED_ON = 16_384;
 
   /** Finds the link a frame for a container leaves by. */
   public interface Router {
@@ -483,6 +486,13 @@ public final class RemoteCalls {
             + REPLY_GRACE_NANOS);
     if (passedOn.size() >= MAX_PASSED_ON) {
       forgetPassed(now);
+      if (passedOn.size() >= MAX_PASSED_ON) {
+        // Each holds two links until its reply or its time is up: a member that sends calls to
+        // pass on with long timeouts and lets no reply come must not make this grow without end.
+        reply(from, payload, Wire.FAILED_UNAVAILABLE, CallErrors.notNowText("container " + self
+            + " passes on " + MAX_PASSED_ON + " calls whose replies have not come back yet"));
+        return;
+      }
     }
     passedOn.put(key, route);
     try {
@@ -499,9 +509,14 @@ public final class RemoteCalls {
     fail(p -> p.destination.equals(container), why);
   }
 
-  /** Fails at once every call that left through the link to {@code neighbour}. */
+  /**
+   * Fails at once every call that left through the link to {@code neighbour}, and forgets the
+   * calls passed on that came or went over it: their replies cannot come back that way.
+   */
   public void failVia(UUID neighbour, String why) {
     fail(p -> p.via.equals(neighbour), why);
+    passedOn.values().removeIf(
+        r -> r.in.peerId.equals(neighbour) || r.out.peerId.equals(neighbour));
   }
 
   /** Fails every waiting call (the container closes). */
