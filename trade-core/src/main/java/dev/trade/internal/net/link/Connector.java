@@ -240,6 +240,9 @@ public final class Connector {
         backoff.put(address, MIN_BACKOFF_MS);
         schedule(address, chain, MAX_BACKOFF_MS);
       } catch (IOException | Handshake.Failure | RuntimeException e) {
+        if (closed) {
+          return; // closing ended the attempt: nothing failed, and nothing will retry
+        }
         logFailure(address, e.getMessage(), delay, System.nanoTime());
         backoff.put(address, Math.min(MAX_BACKOFF_MS, delay * 2));
         schedule(address, chain, delay);
