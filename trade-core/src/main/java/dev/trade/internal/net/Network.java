@@ -434,6 +434,9 @@ public final class Network implements AutoCloseable {
     workers.shutdownNow();
     try {
       control.awaitTermination(Math.max(0, deadline - System.nanoTime()), TimeUnit.NANOSECONDS);
+      // Connects in flight end with their sockets; waiting keeps their last words inside close().
+      workers.awaitTermination(Math.max(0, deadline - System.nanoTime()), TimeUnit.NANOSECONDS);
+      connector.awaitClosed(Math.max(0, deadline - System.nanoTime()));
       CompletableFuture.allOf(live.stream().map(Link::whenClosed).toArray(CompletableFuture[]::new))
           .get(Math.max(0, deadline - System.nanoTime()), TimeUnit.NANOSECONDS);
     } catch (InterruptedException e) {

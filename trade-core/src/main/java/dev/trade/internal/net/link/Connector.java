@@ -383,6 +383,10 @@ public final class Connector {
         + " ms");
   }
 
+  /** Waits up to {@code nanos} for the handshakes that {@link #close()} interrupted to end. */
+  public void awaitClosed(long nanos) throws InterruptedException {
+    handshakes.awaitTermination(nanos, TimeUnit.NANOSECONDS);
+  }
 
   public void close() {
     closed = true;
