@@ -21,10 +21,12 @@ import org.junit.jupiter.api.Test;
 /**
  * A slow link that carries everything in the end is not a dead one: neither side may declare the
  * other gone while bytes keep going across, however long a frame or a queue of frames takes.
- * Both sides here have {@code FAILURETIMEOUT=800}.
+ * Both sides here have {@code FAILURETIMEOUT=2000}: a frame takes a quarter of it or less on the
+ * wire, so a machine too busy to run the throttling proxy for a moment does not close the link.
  */
 class SlowLinkTest {
   private static final Duration WAIT = Duration.ofSeconds(10);
+  private static final String FAILURE_TIMEOUT = "2000";
 
   /** A provided service. */
   public static final class Digest {
@@ -45,13 +47,13 @@ class SlowLinkTest {
    */
   private static long overASlowLink(long bytesPerSecond, OverTheLink test) throws Exception {
     try (TRADEContainer provider = Hubs.hubBuilder("far-provider")
-        .property("HEARTBEATINTERVAL", "100").property("FAILURETIMEOUT", "800").build()) {
+        .property("HEARTBEATINTERVAL", "100").property("FAILURETIMEOUT", FAILURE_TIMEOUT).build()) {
       provider.registerAllServices(new Digest());
       InetSocketAddress target = new InetSocketAddress("127.0.0.1",
           Integer.parseInt(provider.getServerAddresses().get(0).split("@")[1]));
       try (ThrottlingProxy slowLink = new ThrottlingProxy(target, bytesPerSecond);
           TRADEContainer caller = TRADEContainer.builder().name("far-caller")
-              .property("HEARTBEATINTERVAL", "100").property("FAILURETIMEOUT", "800")
+              .property("HEARTBEATINTERVAL", "100").property("FAILURETIMEOUT", FAILURE_TIMEOUT)
               .property("CONNECTCONTAINERS", slowLink.address()).build()) {
         TRADEServiceConstraints sha = new TRADEServiceConstraints().name("sha256");
         Await.until(WAIT, () -> !caller.getAvailableServices(sha).isEmpty(), "the sha256 service");
@@ -66,13 +68,13 @@ class SlowLinkTest {
   /** The receiver must not declare the sender gone in the middle of a frame whose bytes keep coming. */
   @Test
   void largeArgumentSlowerThanTheFailureTimeoutArrives() throws Exception {
-    byte[] data = new byte[3 << 20];
+    byte[] data = new byte[6 << 20];
     new Random(7).nextBytes(data);
-    // 3 MiB at 1 MiB/s: about three seconds on the wire, more than three failure timeouts.
+    // 6 MiB at 1 MiB/s: about six seconds on the wire, three failure timeouts.
     long ms = overASlowLink(1 << 20, sha256 ->
         assertArrayEquals(ConcurrentCallersTest.sha256(data), sha256.call(byte[].class, (Object) data)));
-    System.out.println("3 MiB over a 1 MiB/s link with FAILURETIMEOUT=800: " + ms + " ms");
-    assertTrue(ms >= 2400, "the link was not slow: " + ms + " ms");
+    System.out.println("6 MiB over a 1 MiB/s link with FAILURETIMEOUT=2000: " + ms + " ms");
+    assertTrue(ms >= 4800, "the link was not slow: " + ms + " ms");
   }
 
   /**
@@ -82,9 +84,9 @@ class SlowLinkTest {
    */
   @Test
   void aQueueThatTakesLongerThanTheFailureTimeoutToDrainIsNotAStalledWrite() throws Exception {
-    // 16 calls of 1 MiB at once over a 4 MiB/s link: each frame takes a quarter of a second, the
-    // queue of them (beyond what socket buffers hold) several FAILURETIMEOUTs.
-    long ms = overASlowLink(4 << 20, sha256 -> {
+    // 16 calls of 1 MiB at once over a 2 MiB/s link: each frame takes half a second, the queue
+    // of them (beyond what socket buffers hold) several FAILURETIMEOUTs.
+    long ms = overASlowLink(2 << 20, sha256 -> {
       List<CompletableFuture<Boolean>> calls = new ArrayList<>();
       for (int i = 0; i < 16; i++) {
         byte[] data = new byte[1 << 20];
@@ -102,8 +104,8 @@ class SlowLinkTest {
         assertTrue(call.get(60, TimeUnit.SECONDS));
       }
     });
-    System.out.println("16 x 1 MiB over a 4 MiB/s link with FAILURETIMEOUT=800: " + ms + " ms");
-    assertTrue(ms >= 3000, "the link was not slow: " + ms + " ms");
+    System.out.println("16 x 1 MiB over a 2 MiB/s link with FAILURETIMEOUT=2000: " + ms + " ms");
+    assertTrue(ms >= 6000, "the link was not slow: " + ms + " ms");
   }
 
   /**

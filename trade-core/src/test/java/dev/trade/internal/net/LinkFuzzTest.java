@@ -171,8 +171,15 @@ class LinkFuzzTest {
         String frameFigures = fuzzFrames(mutator, modelId[0], findings, caller);
         double frameSeconds = (System.nanoTime() - start) / 1e9;
         caller.awaitMore(20);
-        Await.until(GENEROUS, () -> threads() <= threadsBefore + 2,
-            "the threads to come back to " + threadsBefore + " (+2)");
+        try {
+          // Links' threads end as their peers' sockets close, which takes a while on a busy
+          // machine after hundreds of thousands of them.
+          Await.until(Duration.ofSeconds(120), () -> threads() <= threadsBefore + 2,
+              "the threads to come back to " + threadsBefore + " (+2)");
+        } catch (AssertionError e) {
+          throw new AssertionError(e.getMessage() + "; threads now: " + Thread.getAllStackTraces()
+              .keySet().stream().map(Thread::getName).sorted().toList(), e);
+        }
         long heapAfterRun = usedHeapAfterGc();
         // The victim keeps the state of each container that left for a minute (Replication's
         // grace): tens of thousands of fuzzing peers then weigh some MB, which must go.

@@ -41,7 +41,7 @@ class NotReadingPeerTest {
   }
 
   @Test
-  @Timeout(60)
+  @Timeout(180)
   void aLinkWhosePeerStopsReadingIsClosedOnceAWriteHasWaitedForFailureTimeout() throws Exception {
     ScheduledExecutorService pinger = Executors.newSingleThreadScheduledExecutor();
     try (LogCapture log = new LogCapture();
@@ -55,7 +55,8 @@ class NotReadingPeerTest {
         // Requests for the provider's table, whose answers come to far more than loopback's
         // socket buffers (a few MB each way) hold, and are never read.
         sink.send(tableRequests(provider.getId(), 200_000));
-        Await.until(Duration.ofSeconds(30), () -> log.has(Level.INFO,
+        // 200,000 answers take a while to make on a busy machine before the buffers are full.
+        Await.until(Duration.ofSeconds(120), () -> log.has(Level.INFO,
             "provider: link to sink closed: not reading: a write has waited", "(FAILURETIMEOUT=1500)"),
             "the link closed for its stalled write, in:\n" + log.tail());
       }
