@@ -23,8 +23,8 @@ import java.util.UUID;
  * }</pre>
  *
  * <p>A lock is a lease in each service's container, renewed by its container while it lives and
- * reaches them; if it dies or is cut off, the services are free again within {@code FAILURETIMEOUT}
- * (docs/locks.md). A service that leaves, or whose lease ended, is {@linkplain #getDropped()
+ * reaches them; if it dies or is cut off, the services are free again as soon as their containers
+ * see it leave, and at the latest {@code FAILURETIMEOUT} after its last renewal (docs/locks.md). A service that leaves, or whose lease ended, is {@linkplain #getDropped()
  * dropped} from the lock. Safe for concurrent use.
  */
 public final class TRADELock implements AutoCloseable {

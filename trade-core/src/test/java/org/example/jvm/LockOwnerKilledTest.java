@@ -21,8 +21,9 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The process owning a lock is killed with SIGKILL while a request from another container waits
- * for the same service: the service's container frees it when the lease ends (FAILURETIMEOUT,
- * 3 s, after the owner's last renewal) and the waiting request gets it.
+ * for the same service: the service's container frees it when it sees the owner leave (its
+ * sockets end), at the latest when the lease ends (FAILURETIMEOUT, 3 s, after the owner's last
+ * renewal), and the waiting request gets it.
  */
 class LockOwnerKilledTest {
   private static final Duration START = Duration.ofSeconds(60);

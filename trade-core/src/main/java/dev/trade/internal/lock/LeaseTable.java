@@ -227,6 +227,26 @@ final class LeaseTable {
     return l.tokens.size();
   }
 
+  /**
+   * Ends every lease of locks owned by container {@code owner}, which was seen to leave (closed,
+   * crashed, or cut off): its renewals cannot arrive, so waiting for the leases to expire would
+   * only keep the services idle. Requests of other owners waiting for them are woken. A lease of
+   * an owner that is merely slow is untouched: only its expiry ends it.
+   *
+   * @return how many leases ended
+   */
+  synchronized int ownerLeft(UUID owner, long now) {
+    expire(now);
+    List<Lease> ended = new ArrayList<>();
+    for (Lease l : leases.values()) {
+      if (l.claim.owner().equals(owner)) {
+        ended.add(l);
+      }
+    }
+    ended.forEach(this::remove);
+    return ended.size();
+  }
+
   /** Forgets {@code service} (it left): its lease no longer holds it. */
   synchronized void drop(long service) {
     Lease l = holders.remove(service);

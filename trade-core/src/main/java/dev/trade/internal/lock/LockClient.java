@@ -239,9 +239,14 @@ public final class LockClient {
             + " under a lock are made from the container that took it)");
       }
       c = held.contexts.get(key(d));
-      if (c == null || held.dropped.contains(key(d))) {
-        throw CallErrors.locked(d, "lock " + lock + " does not hold it"
-            + (c == null ? "; it holds " + held.services : " any more (it left, or its lease ended)"));
+      if (c == null) {
+        throw CallErrors.locked(d, "lock " + lock + " does not hold it; it holds " + held.services);
+      }
+      // A dropped service that is known again (a partition healed) is asked all the same: its
+      // container alone knows whether the lease is still this lock's, and refuses the old token
+      // if it is not (fencing). One that is gone cannot be asked.
+      if (held.dropped.contains(key(d)) && registry.entry(d) == null) {
+        throw CallErrors.locked(d, "lock " + lock + " does not hold it any more (it left)");
       }
     }
     if (!wait) {

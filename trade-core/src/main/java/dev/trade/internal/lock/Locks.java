@@ -8,6 +8,8 @@ import dev.trade.internal.registry.LocalService;
 import dev.trade.internal.registry.Query;
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.system.SystemGroup;
+import java.lang.System.Logger;
+import java.lang.System.Logger.Level;
 import java.time.Duration;
 import java.time.Instant;
 import java.util.List;
@@ -21,6 +23,8 @@ import java.util.function.LongSupplier;
  * for concurrent use.
  */
 public final class Locks {
+  private static final Logger LOG = System.getLogger("dev.trade.lock");
+
   /** Context key: the id of the lock a call is made under (docs/protocol.md, "Call context"). */
   public static final String LOCK = "trade.lock";
   /** Context key: the fencing token of that lock for the called service, in decimal. */
@@ -56,14 +60,40 @@ public final class Locks {
     this.link = new LockLink(table, clock, names::describe);
     this.service = new LockService(table, registry, infos, clock, wall, names);
     this.client = new LockClient(registry, caller, lease.toNanos(), callTimeout.toNanos(), name);
-    registry.addListener((added, removed) -> {
-      for (Entry e : removed) {
-        if (e.local() != null) {
-          table.drop(e.descriptor().serviceId());
+    registry.addListener(new Registry.Listener() {
+      @Override
+      public void changed(List<Entry> added, List<Entry> removed) {
+        for (Entry e : removed) {
+          if (e.local() != null) {
+            table.drop(e.descriptor().serviceId());
+          }
         }
+        client.removed(removed);
       }
-      client.removed(removed);
+
+      @Override
+      public void containerLeft(String containerId) {
+        ownerLeft(containerId, clock.getAsLong());
+      }
     });
+  }
+
+  /**
+   * Container {@code containerId} left: the leases it owns here end at once (docs/locks.md,
+   * "Leases and fencing"), rather than when their renewals stop.
+   */
+  void ownerLeft(String containerId, long now) {
+    UUID owner;
+    try {
+      owner = UUID.fromString(containerId);
+    } catch (IllegalArgumentException e) {
+      return; // not a container id this table can hold leases for
+    }
+    int ended = table.ownerLeft(owner, now);
+    if (ended > 0) {
+      LOG.log(Level.INFO, "{0} lock(s) of container {1} ended here: the container left", ended,
+          containerId);
+    }
   }
 
   /** The host chain's lock link. */

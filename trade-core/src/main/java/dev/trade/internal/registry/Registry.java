@@ -33,6 +33,13 @@ public final class Registry {
   /** Told of every change, under the registry's lock. */
   public interface Listener {
     void changed(List<Entry> added, List<Entry> removed);
+
+    /**
+     * Container {@code containerId} left or became unreachable (after its services' removal was
+     * told to {@link #changed}, and also when it had none): those who keep state for it act now
+     * rather than wait for it to time out.
+     */
+    default void containerLeft(String containerId) {}
   }
 
   private final String containerId;
@@ -342,6 +349,9 @@ public final class Registry {
     table.values().forEach(e -> services.add(e.descriptor()));
     if (!table.isEmpty()) {
       publish(List.of(), new ArrayList<>(table.values()));
+    }
+    for (Listener l : listeners) {
+      l.containerLeft(owner);
     }
     return new Table(owner, version == null ? 0L : version, services);
   }

@@ -8,9 +8,12 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trade.TRADEBadArgumentsException;
 import dev.trade.TRADENotAuthorizedException;
+import dev.trade.testing.Await;
+import java.time.Duration;
 import java.util.List;
 import java.util.Map;
 import java.util.UUID;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 
@@ -192,5 +195,55 @@ class LeaseTableTest {
     assertEquals(w, rows.get(1).claim());
     assertEquals(5, rows.get(1).sinceMillis());
     assertTrue(table.list(LEASE).stream().noneMatch(LeaseTable.Row::holding), "ended");
+  }
+  @Test
+  void anOwnerSeenToLeaveLosesItsLeasesAtOnce() throws Exception {
+    LeaseTable.Claim gone = claim(A);
+    long oldToken = grant(gone, 0, 1, 2).tokens().get(1L);
+    LeaseTable.Claim other = claim(B);
+    grant(other, 0, 3);
+    assertEquals(1, table.ownerLeft(A, MS), "one lease of A ended");
+    // Long before the lease would have expired, the services are free; B's lease is untouched.
+    LeaseTable.Outcome next = grant(claim(B), 2 * MS, 1, 2);
+    assertTrue(next.granted(), "free when the owner left, not at the lease's end");
+    assertTrue(next.tokens().get(1L) > oldToken);
+    assertFalse(grant(claim(A), 2 * MS, 3).granted(), "another owner's lease stays");
+    assertTrue(table.renew(A, List.of(gone.lock()), 3 * MS).isEmpty(), "nothing left to renew");
+    LeaseTable.Admission stale = table.admit(1, gone.lock(), oldToken, A, 3 * MS);
+    assertFalse(stale.admitted());
+    assertTrue(stale.why().contains("is older than the service's latest grant"), stale.why());
+    assertEquals(0, table.ownerLeft(A, 4 * MS), "told twice: nothing more ends");
+  }
+
+  @Test
+  void aSlowOwnerThatDidNotLeaveKeepsItsLease() throws Exception {
+    LeaseTable.Claim slow = claim(A);
+    grant(slow, 0, 1);
+    table.ownerLeft(B, MS); // another container left
+    // Renewed late, but within each lease: held for ten leases without one call.
+    for (int i = 1; i <= 10; i++) {
+      long now = i * (LEASE - MS);
+      assertEquals(1, table.renew(A, List.of(slow.lock()), now).size(), "renewal " + i);
+      assertFalse(grant(claim(B), now + MS, 1).granted(), "still held after renewal " + i);
+    }
+  }
+
+  @Test
+  void aRequestWaitingForALeaseIsWokenWhenItsOwnerLeaves() throws Exception {
+    LeaseTable.Claim gone = claim(A);
+    grant(gone, 0, 1);
+    CompletableFuture<LeaseTable.Outcome> waiting =
+        CompletableFuture.supplyAsync(() -> {
+          try {
+            // Its deadline is far beyond the lease: only the departure can grant it in time.
+            return table.awaitGrant(claim(B), new long[] {1}, 1000 * LEASE, () -> 0, () -> 0);
+          } catch (Exception e) {
+            throw new IllegalStateException(e);
+          }
+        });
+    Await.until(Duration.ofSeconds(30),
+        () -> table.list(0).size() == 2, "the request waits");
+    table.ownerLeft(A, 0);
+    assertTrue(waiting.get(30, TimeUnit.SECONDS).granted());
   }
 }

@@ -2,6 +2,8 @@ package dev.trade.examples.system;
 
 import dev.trade.TRADEContainer;
 import dev.trade.TRADEException;
+import dev.trade.TRADELock;
+import dev.trade.TRADELockInfo;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
@@ -19,6 +21,7 @@ import java.util.Collections;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
+import java.util.UUID;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionException;
 
@@ -40,6 +43,12 @@ import java.util.concurrent.CompletionException;
  * CALLED host-B -> B on [10.200.2.2] in 3 ms t=...
  * CALL-FAILED host-B TRADEServiceNotFoundException: ... t=...
  * SERVING whereAmIAfter(5000) t=...
+ * LOCKED 6f3e... A=12,C=7 t=...
+ * UNDER-LOCK host-A -> A t=...
+ * UNDER-LOCK-FAILED host-A TRADELockedException: ... t=...
+ * ACTUATED by B t=...
+ * LOCKS actuate(java.lang.String)@A=B:6f3e...:12 t=...
+ * RELEASED 6f3e... t=...
  * NEIGHBOURS &lt;id&gt;,&lt;id&gt; t=...
  * BYE t=...
  * </pre>
@@ -49,10 +58,15 @@ import java.util.concurrent.CompletionException;
  * {@code whereAmIAfter(ms)}, which answers after that delay and prints {@code SERVING} where it
  * runs), {@code bulk <group> <calls> <KiB>} (that many calls of {@code length(byte[])} at once,
  * each with an argument of that size; prints {@code BULK <group> <calls> answered in <ms> ms} or
- * {@code BULK-FAILED <group> <n> of <calls>: <first failure>}), {@code neighbours}, and
- * {@code quit}. Calls run on threads of their own. At the end
- * of its input it closes the container and exits, so that it never outlives the test that drives
- * it. Logs go to standard error.
+ * {@code BULK-FAILED <group> <n> of <calls>: <first failure>}), {@code neighbours},
+ * {@code lock <group>,<group>... <ms>} (lock {@code actuate(String)} of each group at once,
+ * waiting up to that long; prints {@code LOCKED <id> <container>=<fencing token>,...} or
+ * {@code LOCK-FAILED}), {@code under <group>} (call {@code actuate(String)} in that group under
+ * the lock taken last, or without a lock if none; the service prints {@code ACTUATED by <caller>}
+ * where it runs), {@code release} (release the lock taken last), {@code locks} (every holder:
+ * service, container, holder's container, lock id, token), and {@code quit}. Calls and lock
+ * commands run on threads of their own. At the end of its input it closes the container and
+ * exits, so that it never outlives the test that drives it. Logs go to standard error.
  */
 public final class HostNode {
   private static final Duration CALL_TIMEOUT = Duration.ofSeconds(5);
@@ -86,6 +100,22 @@ public final class HostNode {
     }
   }
 
+  /** An effector to lock: it says where it runs and for whom. */
+  public static final class Effector {
+    private final String name;
+
+    Effector(String name) {
+      this.name = name;
+    }
+
+    /** Acts for {@code by} (the caller's name) and answers with this host's name. */
+    @TRADEService
+    public String actuate(String by) {
+      say("ACTUATED by " + by);
+      return name;
+    }
+  }
+
   /** Receives joined and left notifications; callbacks are services. */
   public static final class Watcher {
     @TRADEService
@@ -102,6 +132,9 @@ public final class HostNode {
       }
     }
   }
+
+  /** The lock taken last by the {@code lock} command, until released. */
+  private static volatile TRADELock lock;
 
   private HostNode() {}
 
@@ -134,6 +167,7 @@ public final class HostNode {
       container.requestNotification(watcher, "left", whereAmI, null, "left");
       container.registerNotificationNowOrWhenJoined(watcher, whereAmI, "joined");
       container.registerAllServices(new Place(name), "host-" + name, "multihost");
+      container.registerAllServices(new Effector(name), "host-" + name, "effectors");
       say("READY " + name + " id=" + container.getId() + " pid=" + ProcessHandle.current().pid()
           + " listening=" + container.getServerAddresses());
 
@@ -149,15 +183,20 @@ public final class HostNode {
         } else if (words[0].equals("call") && (words.length == 2 || words.length == 3)) {
           // On a thread of its own, so that commands go on while a call is in flight.
           long delay = words.length == 3 ? Long.parseLong(words[2]) : -1;
-          Thread t = new Thread(() -> call(container, words[1], delay), "call " + words[1]);
-          t.setDaemon(true);
-          t.start();
+          background(() -> call(container, words[1], delay), "call " + words[1]);
         } else if (words[0].equals("bulk") && words.length == 4) {
           int calls = Integer.parseInt(words[2]);
           int kib = Integer.parseInt(words[3]);
-          Thread t = new Thread(() -> bulk(container, words[1], calls, kib), "bulk " + words[1]);
-          t.setDaemon(true);
-          t.start();
+          background(() -> bulk(container, words[1], calls, kib), "bulk " + words[1]);
+        } else if (words[0].equals("lock") && words.length == 3) {
+          long wait = Long.parseLong(words[2]);
+          background(() -> lock(container, words[1].split(","), wait), "lock");
+        } else if (words[0].equals("under") && words.length == 2) {
+          background(() -> under(container, name, words[1]), "under " + words[1]);
+        } else if (words[0].equals("release") && words.length == 1) {
+          background(HostNode::release, "release");
+        } else if (words[0].equals("locks") && words.length == 1) {
+          background(() -> locks(container), "locks");
         } else if (words[0].equals("neighbours")) {
           say("NEIGHBOURS " + String.join(",", container.getNeighbours()));
         } else {
@@ -166,6 +205,85 @@ public final class HostNode {
       }
     }
     say("BYE");
+  }
+
+  private static void background(Runnable task, String what) {
+    Thread t = new Thread(task, what);
+    t.setDaemon(true);
+    t.start();
+  }
+
+  private static TRADEServiceInfo effector(TRADEContainer container, String group)
+      throws TRADEException {
+    return container.getAvailableService(new TRADEServiceConstraints().inGroups(group)
+        .name("actuate").argTypes(String.class)).withTimeout(CALL_TIMEOUT);
+  }
+
+  /** Locks actuate(String) of every group at once, waiting up to {@code waitMillis}. */
+  private static void lock(TRADEContainer container, String[] groups, long waitMillis) {
+    try {
+      List<TRADEServiceInfo> services = new ArrayList<>();
+      for (String g : groups) {
+        services.add(effector(container, g));
+      }
+      TRADELock taken = container.lock(services, Duration.ofMillis(waitMillis));
+      lock = taken;
+      Map<String, Long> tokens = new TreeMap<>();
+      for (TRADELockInfo i : container.getLocks()) {
+        if (i.isHolding() && i.getLockId().equals(taken.getId())) {
+          tokens.put(i.getService().getContainerName(), i.getFencingToken());
+        }
+      }
+      List<String> pairs = new ArrayList<>();
+      tokens.forEach((c, t) -> pairs.add(c + "=" + t));
+      say("LOCKED " + taken.getId() + " " + String.join(",", pairs));
+    } catch (TRADEException e) {
+      say("LOCK-FAILED " + e.getClass().getSimpleName() + ": " + e.getMessage());
+    }
+  }
+
+  /** Calls actuate(name) in {@code group} under the lock taken last (none: an ordinary call). */
+  private static void under(TRADEContainer container, String name, String group) {
+    TRADELock held = lock;
+    UUID id = held == null ? null : held.getId();
+    try {
+      String answer = effector(container, group).call(id, String.class, name);
+      say("UNDER-LOCK " + group + " -> " + answer);
+    } catch (TRADEException e) {
+      say("UNDER-LOCK-FAILED " + group + " " + e.getClass().getSimpleName() + ": " + e.getMessage());
+    }
+  }
+
+  private static void release() {
+    TRADELock held = lock;
+    if (held == null) {
+      say("RELEASE-FAILED no lock taken");
+      return;
+    }
+    try {
+      held.release();
+      lock = null;
+      say("RELEASED " + held.getId());
+    } catch (TRADEException e) {
+      say("RELEASE-FAILED " + e.getClass().getSimpleName() + ": " + e.getMessage());
+    }
+  }
+
+  /** Every lease of every container: service@container=holder's container:lock:token. */
+  private static void locks(TRADEContainer container) {
+    try {
+      List<String> rows = new ArrayList<>();
+      for (TRADELockInfo i : container.getLocks()) {
+        if (i.isHolding()) {
+          rows.add(i.getService().serviceString + "@" + i.getService().getContainerName() + "="
+              + i.getContainerName() + ":" + i.getLockId() + ":" + i.getFencingToken());
+        }
+      }
+      Collections.sort(rows);
+      say("LOCKS " + String.join(" ", rows));
+    } catch (TRADEException e) {
+      say("LOCKS-FAILED " + e.getClass().getSimpleName() + ": " + e.getMessage());
+    }
   }
 
   /** Finds whereAmI() (or, with a delay, whereAmIAfter(long)) in {@code group} and calls it. */
