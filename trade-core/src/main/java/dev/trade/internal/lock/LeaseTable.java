@@ -30,8 +30,13 @@ final class LeaseTable {
    */
   record Blocker(long service, Claim claim, long sinceMillis, boolean holding) {}
 
-  /** A grant (tokens by service, in request order) or the blocker that prevented it. */
+  /**
+   * A grant (tokens by service, in request order) or the blocker that prevented it; neither for a
+   * request withdrawn because its owner left ({@link #WITHDRAWN}).
+   */
   record Outcome(Map<Long, Long> tokens, Blocker blocker) {
+    static final Outcome WITHDRAWN = new Outcome(null, null);
+
     boolean granted() {
       return tokens != null;
     }
@@ -160,6 +165,9 @@ final class LeaseTable {
     try {
       synchronized (this) {
         while (true) {
+          if (!waiters.containsKey(ticket)) {
+            return Outcome.WITHDRAWN; // its owner left: a grant would hold services for no one
+          }
           long now = clock.getAsLong();
           Outcome o = tryGrant(claim, services, ticket, now, wall.getAsLong());
           if (o.granted() || deadline - now <= 0) {
@@ -230,8 +238,9 @@ final class LeaseTable {
   /**
    * Ends every lease of locks owned by container {@code owner}, which was seen to leave (closed,
    * crashed, or cut off): its renewals cannot arrive, so waiting for the leases to expire would
-   * only keep the services idle. Requests of other owners waiting for them are woken. A lease of
-   * an owner that is merely slow is untouched: only its expiry ends it.
+   * only keep the services idle. Requests of other owners waiting for them are woken, and the
+   * owner's own waiting requests are withdrawn (they end not granted). A lease of an owner that is
+   * merely slow is untouched: only its expiry ends it.
    *
    * @return how many leases ended
    */
@@ -244,6 +253,9 @@ final class LeaseTable {
       }
     }
     ended.forEach(this::remove);
+    if (waiters.values().removeIf(w -> w.claim.owner().equals(owner))) {
+      notifyAll();
+    }
     return ended.size();
   }
 

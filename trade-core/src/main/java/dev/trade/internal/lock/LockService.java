@@ -127,7 +127,9 @@ public final class LockService {
       }
       result.put("tokens", tokens);
     } else {
-      result.put("reason", names.describe(o.blocker()));
+      result.put("reason", o.blocker() == null
+          ? "container " + claim.owner() + " left while its request waited"
+          : names.describe(o.blocker()));
     }
     return result;
   }

@@ -246,4 +246,25 @@ class LeaseTableTest {
     table.ownerLeft(A, 0);
     assertTrue(waiting.get(30, TimeUnit.SECONDS).granted());
   }
+
+  @Test
+  void aWaitingRequestOfAnOwnerThatLeavesIsWithdrawnAndBlocksNoOneBehindIt() throws Exception {
+    grant(claim(A), 0, 1);
+    LeaseTable.Claim leaving = claim(B);
+    CompletableFuture<LeaseTable.Outcome> waiting = CompletableFuture.supplyAsync(() -> {
+      try {
+        return table.awaitGrant(leaving, new long[] {1, 2}, 1000 * LEASE, () -> 0, () -> 0);
+      } catch (Exception e) {
+        throw new IllegalStateException(e);
+      }
+    });
+    Await.until(Duration.ofSeconds(30), () -> table.list(0).size() == 3, "the request waits");
+    table.ownerLeft(B, 0);
+    LeaseTable.Outcome o = waiting.get(30, TimeUnit.SECONDS);
+    assertFalse(o.granted());
+    assertNull(o.blocker());
+    // Service 2 is free, and no request waits for it any more.
+    assertTrue(grant(claim(A), 0, 2).granted());
+    assertEquals(2, table.list(0).size(), table.list(0).toString());
+  }
 }
