@@ -91,4 +91,20 @@ class OwnerDepartureTest {
       throw new IllegalStateException(e);
     }
   }
+
+  @Test
+  void anOwnerWithALongerFailureTimeoutRenewsWithinTheServicesShorterLease() throws Exception {
+    TRADEContainer robot = net.hub("robot"); // a lease of 3 s
+    robot.registerAllServices(head, "head");
+    // Left to its own FAILURETIMEOUT, the owner would renew every 20 s, long after the lease ended.
+    TRADEContainer owner = net.keep(Hubs.spokeBuilder("owner", robot)
+        .property("FAILURETIMEOUT", "60000").build());
+    TRADEContainer next = net.spoke("next", robot);
+    TRADELock held = owner.lock(List.of(move(owner)), Duration.ZERO);
+    TRADELockedException refused = assertThrows(TRADELockedException.class,
+        () -> next.lock(List.of(move(next)), Duration.ofMillis(8000)));
+    assertTrue(refused.getMessage().contains("held by lock " + held.getId()), refused.getMessage());
+    assertEquals(8, move(owner).call(held.getId(), Integer.class, 8), "still the owner's");
+    held.close();
+  }
 }

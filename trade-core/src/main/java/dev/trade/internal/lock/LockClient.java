@@ -27,6 +27,7 @@ import java.util.UUID;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 
 /**
@@ -95,18 +96,23 @@ public final class LockClient {
 
   private final Registry registry;
   private final ServiceCaller caller;
-  private final long leaseNanos;
   private final long callTimeoutNanos;
   private final String name;
   private final Map<UUID, Held> mine = new ConcurrentHashMap<>();
   private ScheduledExecutorService renewer; // Guarded by this.
+  private ScheduledFuture<?> nextRenewal; // Guarded by this.
+  /**
+   * The shortest lease a container granted a lock from here (their FAILURETIMEOUTs may differ from
+   * ours): renewals go every third of it. Starts at our own and only shortens. Guarded by this.
+   */
+  private long shortestLeaseNanos;
   private boolean closed; // Guarded by this.
 
   LockClient(Registry registry, ServiceCaller caller, long leaseNanos, long callTimeoutNanos,
       String name) {
     this.registry = registry;
     this.caller = caller;
-    this.leaseNanos = leaseNanos;
+    this.shortestLeaseNanos = leaseNanos;
     this.callTimeoutNanos = callTimeoutNanos;
     this.name = name;
   }
@@ -164,6 +170,9 @@ public final class LockClient {
               : "") + "; nothing was locked");
         }
         long[] tokens = (long[]) r.get("tokens");
+        if (r.get("leaseMillis") instanceof Long ms && ms > 0) {
+          leaseGranted(TimeUnit.MILLISECONDS.toNanos(ms));
+        }
         held.containers.add(c.getKey());
         for (int i = 0; i < ids.length; i++) {
           held.granted(here.get(i), tokens[i]);
@@ -311,7 +320,7 @@ public final class LockClient {
       for (Held h : c.getValue()) {
         ids.add(h.id.toString());
       }
-      caller.callAsync(d, Map.class, new Object[] {ids}, Math.max(1, leaseNanos / 2))
+      caller.callAsync(d, Map.class, new Object[] {ids}, Math.max(1, shortestLease() / 2))
           .whenComplete((r, failure) -> {
             if (r != null) {
               renewed(c.getKey(), c.getValue(), r);
@@ -356,15 +365,36 @@ public final class LockClient {
         t.setDaemon(true);
         return t;
       });
-      long period = Math.max(1, leaseNanos / 3);
-      renewer.scheduleAtFixedRate(() -> {
-        try {
-          renew();
-        } catch (RuntimeException e) {
-          LOG.log(Level.WARNING, "renewing locks failed; trying again", e);
-        }
-      }, period, period, TimeUnit.NANOSECONDS);
+      armRenewal();
     }
+  }
+
+  private synchronized long shortestLease() {
+    return shortestLeaseNanos;
+  }
+
+  /** A container granted a lease of {@code nanos}: a shorter one than any so far renews sooner. */
+  private synchronized void leaseGranted(long nanos) {
+    if (nanos < shortestLeaseNanos) {
+      shortestLeaseNanos = nanos;
+      if (nextRenewal != null && nextRenewal.cancel(false)) {
+        armRenewal();
+      }
+    }
+  }
+
+  private synchronized void armRenewal() {
+    if (closed) {
+      return;
+    }
+    nextRenewal = renewer.schedule(() -> {
+      try {
+        renew();
+      } catch (RuntimeException e) {
+        LOG.log(Level.WARNING, "renewing locks failed; trying again", e);
+      }
+      armRenewal();
+    }, Math.max(1, shortestLeaseNanos / 3), TimeUnit.NANOSECONDS);
   }
 
   synchronized void close() {

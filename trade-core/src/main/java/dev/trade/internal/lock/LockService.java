@@ -126,6 +126,7 @@ public final class LockService {
         tokens[i] = o.tokens().get(serviceIds[i]);
       }
       result.put("tokens", tokens);
+      result.put("leaseMillis", TimeUnit.NANOSECONDS.toMillis(table.leaseNanos()));
     } else {
       result.put("reason", o.blocker() == null
           ? "container " + claim.owner() + " left while its request waited"
