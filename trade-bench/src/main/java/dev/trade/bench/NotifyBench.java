@@ -90,15 +90,7 @@ final class NotifyBench {
       TRADEServiceInfo echo = here.waitForService(named("echo"), Duration.ofSeconds(30));
       json.key("every_lateness").begin();
       for (long period : PERIODS_MS) {
-        int count = (int) Math.max(10, (quick ? 500 : 3000) / period * (period == 100 ? 2 : 1));
-        json.key(period + "ms").begin();
-        json.key("bare_executor");
-        bare(period, count).writeTo(json);
-        json.key("trade_local");
-        every(here, period, count, null).writeTo(json);
-        json.key("trade_remote");
-        every(here, period, count, small).writeTo(json);
-        json.end();
+        lateness(json, here, small, period);
       }
       json.end();
       json.key("streaming").begin();
@@ -107,6 +99,52 @@ final class NotifyBench {
       json.end();
       outstanding(json, far, echo);
     }
+  }
+
+  /**
+   * The bare executor, {@code every} with a local callback and with a remote service, in rounds
+   * that interleave them (the order reversed every other round), so that a load that changes
+   * during the run weighs on all three alike: pooled percentiles, and each round's p99 with the
+   * load average before it.
+   */
+  private void lateness(Json json, TRADEContainer here, TRADEServiceInfo remote, long period)
+      throws Exception {
+    int rounds = quick ? 3 : 5;
+    int count = (int) Math.max(10, (quick ? 500 : 3000) / period * (period == 100 ? 2 : 1) / rounds);
+    String[] kinds = {"bare_executor", "trade_local", "trade_remote"};
+    Stats[] pooled = {new Stats(count * rounds), new Stats(count * rounds), new Stats(count * rounds)};
+    double[][] p99 = new double[3][rounds];
+    double[] load = new double[rounds];
+    for (int r = 0; r < rounds; r++) {
+      load[r] = ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage();
+      for (int i = 0; i < 3; i++) {
+        int k = r % 2 == 0 ? i : 2 - i;
+        Stats s = k == 0 ? bare(period, count) : every(here, period, count, k == 1 ? null : remote);
+        pooled[k].addAll(s);
+        p99[k][r] = Stats.round(s.percentileMicros(99));
+      }
+    }
+    json.key(period + "ms").begin();
+    json.field("rounds", rounds);
+    json.key("load_average_before_rounds").beginArray();
+    for (double l : load) {
+      json.value(Stats.round(l));
+    }
+    json.endArray();
+    for (int k = 0; k < 3; k++) {
+      json.key(kinds[k]);
+      pooled[k].writeTo(json);
+    }
+    json.key("p99_us_by_round").begin();
+    for (int k = 0; k < 3; k++) {
+      json.key(kinds[k]).beginArray();
+      for (double v : p99[k]) {
+        json.value(v);
+      }
+      json.endArray();
+    }
+    json.end();
+    json.end();
   }
 
   private static TRADEServiceConstraints named(String name) {

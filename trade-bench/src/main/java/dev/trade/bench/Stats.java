@@ -18,6 +18,12 @@ final class Stats {
     samples[size++] = nanos;
   }
 
+  void addAll(Stats other) {
+    for (int i = 0; i < other.size; i++) {
+      add(other.samples[i]);
+    }
+  }
+
   int count() {
     return size;
   }

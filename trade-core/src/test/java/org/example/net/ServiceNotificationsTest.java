@@ -304,6 +304,48 @@ class ServiceNotificationsTest {
         "the waiter is not left registered");
   }
 
+  /**
+   * A peer that knows only the wire format asks another container for joined and left with
+   * constraints in their neutral form (a map, docs/protocol.md): only matching services are told.
+   */
+  @Test
+  void joinedAndLeftRequestedOverTheWireFilterByConstraintsInTheirNeutralForm() throws Exception {
+    TRADEContainer hub = hub();
+    TRADEContainer b = spoke("b", hub);
+    NotificationsTest.Recorder watcher = new NotificationsTest.Recorder();
+    hub.registerAllServices(watcher);
+    Map<String, Object> robotDocks = new java.util.LinkedHashMap<>();
+    robotDocks.put("name", "dock");
+    robotDocks.put("argTypes", List.of());
+    robotDocks.put("inGroups", List.of("robot"));
+    TRADEServiceInfo request = system(hub, "requestNotification", "b");
+    String joined = request.call(String.class, "joined", robotDocks, List.of(),
+        only(hub, "joined", "hub"), "hub");
+    String left = request.call(String.class, "left", robotDocks, List.of(),
+        only(hub, "left", "hub"), "hub");
+    assertTrue(joined.startsWith(b.getId() + ":") && left.startsWith(b.getId() + ":"), joined);
+
+    TRADEInvocationException bad = assertThrows(TRADEInvocationException.class,
+        () -> request.call(String.class, "joined", Map.of("nmae", "dock"), List.of(),
+            only(hub, "joined", "hub"), "hub"));
+    assertInstanceOf(TRADEBadArgumentsException.class, bad.getCause());
+    assertEquals("Constraints: constraints has an unknown key 'nmae'; the keys are name, argTypes,"
+        + " returnType, inGroups, notInGroups, local, host, onLocalhost, notOnHost, not, or",
+        bad.getCause().getMessage());
+    assertEquals(2, listOf(hub, "b", "listNotifications").size(), "the bad one was not started");
+
+    Dock simDock = new Dock();
+    Dock robotDock = new Dock();
+    b.registerAllServices(simDock, "sim");
+    b.registerAllServices(new Battery(), "robot");
+    b.registerAllServices(robotDock, "robot");
+    b.deregister(simDock);
+    b.deregister(robotDock);
+    Await.until(WAIT, () -> watcher.events.size() >= 2, "the robot dock joined and left");
+    assertEquals(List.of("joined dock@b", "left dock@b"), List.copyOf(watcher.events),
+        "only the matching service (the dock in group sim is another), in order");
+  }
+
   @Test
   void registerNowOrWhenJoinedReturnsTheMatchesNow() throws TRADEException {
     TRADEContainer c = container("now");

@@ -166,7 +166,7 @@ public final class ContainerCore implements ServiceCaller {
           }
         }, constraints, name);
     try {
-      registerSystem(new NotificationService(notifications, infos));
+      registerSystem(new NotificationService(notifications, notificationClient, infos));
       locks.registered(registerSystem(locks.service()));
       registerSystem(new AdminService(new Administered(), access, settings.providerClasses(),
           System.currentTimeMillis()));

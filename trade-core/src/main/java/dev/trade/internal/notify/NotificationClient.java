@@ -9,23 +9,27 @@ import dev.trade.TRADEServiceUnavailableException;
 import dev.trade.TRADETimeoutException;
 import dev.trade.internal.call.ServiceCaller;
 import dev.trade.internal.codec.InfoBinding;
+import dev.trade.internal.registry.Entry;
 import dev.trade.internal.registry.LocalService;
 import dev.trade.internal.registry.Query;
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
+import dev.trade.internal.system.SystemGroup;
 import dev.trade.internal.system.SystemServices;
 import java.lang.reflect.Method;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collections;
+import java.util.HashSet;
 import java.util.IdentityHashMap;
+import java.util.Iterator;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Set;
 import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
@@ -38,11 +42,14 @@ import java.util.function.Function;
  *
  * <p>The TRADE 1.1.1 forms name a listener object and its callback method: the callback is the
  * listener's {@code @TRADEService} of that name, and a listener not registered yet is registered
- * (in no group) for the purpose. This client remembers those requests, so that
+ * (in no group) for the purpose. This client remembers those requests while they live, so that
  * {@code cancel(listener, type, argument)} finds their ids, and deregisters a listener it
- * registered once its last such request is cancelled here. Safe for concurrent use.
+ * registered once its last such request is cancelled or ended. It forgets a request when it is
+ * cancelled here, when the container that runs it says it ended ({@link #ended}: the engine tells
+ * the callback's container, which is this one for these forms), or when that container leaves.
+ * Safe for concurrent use.
  */
-public final class NotificationClient {
+public final class NotificationClient implements Registry.Listener {
   /** How listeners are registered and deregistered (this container's user registration). */
   public interface Registrar {
     void register(Object listener) throws TRADEException;
@@ -53,8 +60,19 @@ public final class NotificationClient {
     void deregister(Object listener) throws TRADEException;
   }
 
-  /** A listener-form request made here, until cancelled here. */
-  private record Mine(Object listener, Kind kind, Object argument, String id) {}
+  /** A listener-form request made here, while it lives; {@code id} is null while it is being made. */
+  private static final class Mine {
+    final Object listener;
+    final Kind kind;
+    final Object argument;
+    String id; // Guarded by the client's lock.
+
+    Mine(Object listener, Kind kind, Object argument) {
+      this.listener = listener;
+      this.kind = kind;
+      this.argument = argument;
+    }
+  }
 
   private final Registry registry;
   private final ServiceCaller caller;
@@ -62,8 +80,14 @@ public final class NotificationClient {
   private final Registrar registrar;
   private final Function<Object, Query> queries;
   private final String requester;
-  private final List<Mine> mine = new CopyOnWriteArrayList<>();
+  private final Object lock = new Object();
+  // Guarded by lock.
+  private final List<Mine> mine = new ArrayList<>();
   private final Set<Object> registeredHere = Collections.newSetFromMap(new IdentityHashMap<>());
+  /** Ids told ended while requests were being made: one of them may be a request not yet in mine. */
+  private final Set<String> endedEarly = new HashSet<>();
+  /** "<container id>:" of containers whose notification service left, until forgetGone(). */
+  private final Set<String> goneEngines = ConcurrentHashMap.newKeySet();
 
   /**
    * @param queries turns a {@code TRADEServiceConstraints} into a query (null for anything else):
@@ -77,6 +101,7 @@ public final class NotificationClient {
     this.registrar = registrar;
     this.queries = queries;
     this.requester = requester;
+    registry.addListener(this);
   }
 
   /**
@@ -99,19 +124,15 @@ public final class NotificationClient {
     Kind kind = Kind.parse(type);
     ServiceDescriptor service = services == null || services.isEmpty() ? null
         : infos.describe(services.get(0));
-    boolean registered = ensureRegistered(listener, false);
+    Mine m = reserve(listener, kind, argument, false);
+    String id = null;
     try {
       ServiceDescriptor cb = callbackOf(listener, callbackMethod, kind, service);
-      String id = request(type, argument, services, (TRADEServiceInfo) infos.bind(cb));
-      mine.add(new Mine(listener, kind, argument, id));
-    } catch (TRADEException | RuntimeException e) {
-      if (registered) {
-        releaseIfUnused(listener);
-      }
-      throw e;
+      id = request(type, argument, services, (TRADEServiceInfo) infos.bind(cb));
+    } finally {
+      made(m, id);
     }
   }
-
   /**
    * Calls back now for every service matching, then for each that joins.
    *
@@ -119,22 +140,20 @@ public final class NotificationClient {
    */
   public List<TRADEServiceInfo> requestNowOrWhenJoined(Object listener, Object constraints,
       String callbackMethod) throws TRADEException {
-    boolean registered = ensureRegistered(listener, listener instanceof Waiter);
+    Mine m = reserve(listener, Kind.JOINED, constraints, listener instanceof Waiter);
+    String id = null;
     try {
       ServiceDescriptor cb = callbackOf(listener, callbackMethod, Kind.JOINED, null);
       Map<?, ?> r = callSystem(registry.containerId(), "requestNotificationNowOrWhenJoined", Map.class,
           constraints, infos.bind(cb), requester);
-      mine.add(new Mine(listener, Kind.JOINED, constraints, (String) r.get("id")));
       List<TRADEServiceInfo> matches = new ArrayList<>();
-      for (Object m : (List<?>) r.get("matches")) {
-        matches.add((TRADEServiceInfo) m);
+      for (Object o : (List<?>) r.get("matches")) {
+        matches.add((TRADEServiceInfo) o);
       }
+      id = (String) r.get("id");
       return matches;
-    } catch (TRADEException | RuntimeException e) {
-      if (registered) {
-        releaseIfUnused(listener);
-      }
-      throw e;
+    } finally {
+      made(m, id);
     }
   }
 
@@ -146,17 +165,94 @@ public final class NotificationClient {
    */
   public int cancel(Object listener, String type, Object argument) throws TRADEException {
     Kind kind = Kind.parse(type);
-    int n = 0;
-    for (Mine m : mine) {
-      if (m.listener == listener && m.kind == kind
-          && (argument == null || sameArgument(m.argument, argument))
-          && mine.remove(m)) {
-        n++;
-        cancel(m.id);
+    forgetGone();
+    List<String> ids = new ArrayList<>();
+    synchronized (lock) {
+      for (Iterator<Mine> it = mine.iterator(); it.hasNext(); ) {
+        Mine m = it.next();
+        if (m.id != null && m.listener == listener && m.kind == kind
+            && (argument == null || sameArgument(m.argument, argument))) {
+          it.remove();
+          ids.add(m.id);
+        }
       }
     }
-    releaseIfUnused(listener);
-    return n;
+    for (String id : ids) {
+      cancel(id);
+    }
+    release(listener);
+    return ids.size();
+  }
+
+  /**
+   * The notification {@code id} ended (its container says so, whatever the reason): it is
+   * forgotten here, and its listener released if this client registered it and nothing else of
+   * it lives. Unknown ids (a notification requested elsewhere) are ignored.
+   */
+  public void ended(String id) throws TRADEException {
+    forgetGone();
+    Object listener = null;
+    synchronized (lock) {
+      for (Iterator<Mine> it = mine.iterator(); it.hasNext(); ) {
+        Mine m = it.next();
+        if (id.equals(m.id)) {
+          it.remove();
+          listener = m.listener;
+          break;
+        }
+      }
+      if (listener == null && hasPending()) {
+        endedEarly.add(id);
+      }
+    }
+    if (listener != null) {
+      release(listener);
+    }
+  }
+
+  /**
+   * Notes the containers whose notification service left: the requests that ran there ended (or
+   * died with them). Called under the registry's lock, so it only records them; the next request,
+   * cancel or end here forgets those requests and releases their listeners.
+   */
+  @Override
+  public void changed(List<Entry> added, List<Entry> removed) {
+    for (Entry e : removed) {
+      ServiceDescriptor d = e.descriptor();
+      if (d.name().equals("cancelNotification") && d.groups().contains(SystemGroup.NAME)) {
+        goneEngines.add(d.containerId() + ":");
+      }
+    }
+  }
+
+  /** Forgets the requests that ran in containers that left, and releases their listeners. */
+  private void forgetGone() throws TRADEException {
+    if (goneEngines.isEmpty()) {
+      return;
+    }
+    Set<Object> listeners = Collections.newSetFromMap(new IdentityHashMap<>());
+    synchronized (lock) {
+      for (String prefix : List.copyOf(goneEngines)) {
+        goneEngines.remove(prefix);
+        for (Iterator<Mine> it = mine.iterator(); it.hasNext(); ) {
+          Mine m = it.next();
+          if (m.id != null && m.id.startsWith(prefix)) {
+            it.remove();
+            listeners.add(m.listener);
+          }
+        }
+      }
+    }
+    for (Object l : listeners) {
+      release(l);
+    }
+  }
+
+  /** How many listener-form requests this client remembers (for tests). */
+  int remembered() {
+    synchronized (lock) {
+      return mine.size();
+    }
   }
 
   /**
@@ -229,25 +325,64 @@ public final class NotificationClient {
     return SystemServices.call(registry, caller, containerId, name, returnType, args);
   }
 
-  /** Registers {@code listener} if it is not; returns whether this call registered it. */
-  private boolean ensureRegistered(Object listener, boolean system) throws TRADEException {
+  /**
+   * Registers {@code listener} if it is not, and remembers a request being made for it (id still
+   * null), so that no end of another of its requests releases it meanwhile.
+   */
+  private Mine reserve(Object listener, Kind kind, Object argument, boolean system)
+      throws TRADEException {
     Objects.requireNonNull(listener, "listener == null");
-    synchronized (registeredHere) {
-      if (registry.servicesOf(listener) != null) {
-        return false;
+    forgetGone();
+    synchronized (lock) {
+      if (registry.servicesOf(listener) == null) {
+        if (system) {
+          registrar.registerSystem(listener);
+        } else {
+          registrar.register(listener);
+        }
+        registeredHere.add(listener);
       }
-      if (system) {
-        registrar.registerSystem(listener);
-      } else {
-        registrar.register(listener);
-      }
-      registeredHere.add(listener);
-      return true;
+      Mine m = new Mine(listener, kind, argument);
+      mine.add(m);
+      return m;
     }
   }
 
-  private void releaseIfUnused(Object listener) throws TRADEException {
-    synchronized (registeredHere) {
+  /**
+   * The request {@code m} was made with result {@code id} (null: refused): keeps it unless it
+   * ended already, else forgets it and releases its listener if nothing else of it lives.
+   */
+  private void made(Mine m, String id) throws TRADEException {
+    boolean forget;
+    synchronized (lock) {
+      forget = id == null || endedEarly.remove(id);
+      if (forget) {
+        mine.remove(m);
+      } else {
+        m.id = id;
+      }
+      if (!hasPending()) {
+        endedEarly.clear();
+      }
+    }
+    if (forget) {
+      release(m.listener);
+    }
+  }
+
+  /** Whether a request is being made (guarded by lock). */
+  private boolean hasPending() {
+    for (Mine m : mine) {
+      if (m.id == null) {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  /** Deregisters {@code listener} if this client registered it and no request of it lives here. */
+  private void release(Object listener) throws TRADEException {
+    synchronized (lock) {
       for (Mine m : mine) {
         if (m.listener == listener) {
           return;

@@ -26,10 +26,12 @@ import java.util.Objects;
 @TRADEAccess(TRADEAccess.ANYONE)
 public final class NotificationService {
   private final Notifications engine;
+  private final NotificationClient client;
   private final InfoBinding infos;
 
-  public NotificationService(Notifications engine, InfoBinding infos) {
+  public NotificationService(Notifications engine, NotificationClient client, InfoBinding infos) {
     this.engine = Objects.requireNonNull(engine, "engine == null");
+    this.client = Objects.requireNonNull(client, "client == null");
     this.infos = Objects.requireNonNull(infos, "infos == null");
   }
 
@@ -80,6 +82,18 @@ public final class NotificationService {
   @TRADEService
   public boolean cancelNotification(String id) {
     return engine.cancel(id);
+  }
+
+  /**
+   * Told by the container that ran notification {@code id}, whose callback is a service of this
+   * container, that it ended: this container forgets it if it requested it for a listener.
+   *
+   * @param id the notification's id
+   * @param reason why it ended (for the log; as {@code endReason} in the list of ended ones)
+   */
+  @TRADEService
+  public void notificationEnded(String id, String reason) throws TRADEException {
+    client.ended(Objects.requireNonNull(id, "id == null"));
   }
 
   /** The live notifications of this container: one map each, keys as in docs/notifications.md. */

@@ -9,6 +9,7 @@ import dev.trade.internal.registry.Entry;
 import dev.trade.internal.registry.Query;
 import dev.trade.internal.registry.Registry;
 import dev.trade.internal.registry.ServiceDescriptor;
+import dev.trade.internal.system.SystemServices;
 import dev.trade.internal.time.Scheduler;
 import java.lang.System.Logger;
 import java.lang.System.Logger.Level;
@@ -393,7 +394,24 @@ public final class Notifications implements Registry.Listener {
     }
     LOG.log(level, "notification {0} ({1}, requested by {2}, callback {3}) ended: {4}", l.id,
         l.spec.kind().label(), l.spec.requester(), Live.where(l.spec.callback()), reason);
+    runOn(deliveries, () -> tellEnded(l, reason));
     return true;
+  }
+
+  /**
+   * Tells the callback's container that {@code l} ended, so that a requester that keeps its
+   * listener-form requests (its callbacks are its own listeners' services) forgets it. On the
+   * delivery pool: a slow or gone container does not hold up whoever ended it.
+   */
+  private void tellEnded(Live l, String reason) {
+    try {
+      SystemServices.call(registry, caller, l.spec.callback().containerId(), "notificationEnded",
+          Object.class, l.id, reason);
+    } catch (TRADEException | RuntimeException e) {
+      // Gone, or a container that keeps no such requests: nothing is left to forget there.
+      LOG.log(Level.DEBUG, "notification {0}: its end not told to {1}: {2}", l.id,
+          l.spec.callback().containerName(), e.getMessage());
+    }
   }
 
   private static void runOn(Executor executor, Runnable task) {

@@ -3,6 +3,7 @@ package dev.trade.internal.notify;
 import dev.trade.TRADEBadArgumentsException;
 import dev.trade.internal.registry.Query;
 import dev.trade.internal.registry.ServiceDescriptor;
+import dev.trade.internal.system.ConstraintsForm;
 import java.time.Instant;
 import java.util.Arrays;
 import java.util.List;
@@ -27,7 +28,8 @@ record Spec(Kind kind, Timing timing, Query query, ServiceDescriptor service, Ob
   /**
    * Checks a request made at {@code nowNanos} (scheduler time) and {@code nowInstant}.
    *
-   * @param argument the type's argument: constraints for joined and left; the service's arguments
+   * @param argument the type's argument: constraints (or their {@link ConstraintsForm}) for joined
+   *     and left; the service's arguments
    *     for once; a time for the others, alone or as the first element of an array or list whose
    *     other elements are the service's arguments
    * @param queries turns joined and left's argument into a query; null when it is of another kind
@@ -59,10 +61,12 @@ record Spec(Kind kind, Timing timing, Query query, ServiceDescriptor service, Ob
           + " " + service.signature() + " returns " + service.returnTypeName());
     }
     if (kind == Kind.JOINED || kind == Kind.LEFT) {
-      Query q = queries.apply(argument);
+      Query q = queries.apply(ConstraintsForm.isForm(argument) ? ConstraintsForm.decode(argument)
+          : argument);
       if (q == null) {
-        throw new TRADEBadArgumentsException("'" + kind.label() + "' needs TRADEServiceConstraints or"
-            + " null as its argument; got " + argument.getClass().getName());
+        throw new TRADEBadArgumentsException("'" + kind.label() + "' needs constraints (a map as"
+            + " docs/protocol.md describes, or a TRADEServiceConstraints) or null as its argument;"
+            + " got " + argument.getClass().getName());
       }
       return new Spec(kind, null, q, null, new Object[0], callback,
           Shape.of(kind, null, callback), requester);

@@ -47,7 +47,8 @@ class BadRequestsTest {
         + Instant.EPOCH, refused(() -> f.request("after", Instant.EPOCH, null, tick)));
     assertEquals("'after' needs a delay of zero or more; got -5",
         refused(() -> f.request("after", -5L, null, tick)));
-    assertEquals("'joined' needs TRADEServiceConstraints or null as its argument; got java.lang.Long",
+    assertEquals("'joined' needs constraints (a map as docs/protocol.md describes, or a"
+        + " TRADEServiceConstraints) or null as its argument; got java.lang.Long",
         refused(() -> f.request("joined", 5L, null, f.service(sink, "text"))));
   }
 
