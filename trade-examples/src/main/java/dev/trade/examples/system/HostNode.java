@@ -41,6 +41,8 @@ import java.util.concurrent.CompletionException;
  * CALL-FAILED host-B TRADEServiceNotFoundException: ... t=...
  * SERVING whereAmIAfter(5000) t=...
  * NEIGHBOURS &lt;id&gt;,&lt;id&gt; t=...
+ * ADMIN describeContainer@B -> {id=..., name=B, ...} t=...
+ * ADMIN-FAILED shutdown@A TRADENotAuthorizedException: Not authorized: ... t=...
  * BYE t=...
  * </pre>
  *
@@ -49,8 +51,12 @@ import java.util.concurrent.CompletionException;
  * {@code whereAmIAfter(ms)}, which answers after that delay and prints {@code SERVING} where it
  * runs), {@code bulk <group> <calls> <KiB>} (that many calls of {@code length(byte[])} at once,
  * each with an argument of that size; prints {@code BULK <group> <calls> answered in <ms> ms} or
- * {@code BULK-FAILED <group> <n> of <calls>: <first failure>}), {@code neighbours}, and
- * {@code quit}. Calls run on threads of their own. At the end
+ * {@code BULK-FAILED <group> <n> of <calls>: <first failure>}), {@code neighbours},
+ * {@code admin <credentials> <container> <operation> [<argument>]} (calls that container's
+ * middleware service, docs/middleware-services.md, as {@code <principal>:<secret>}, or anonymously
+ * for {@code -}; {@code startProvider} takes a class name and registers it in the group
+ * {@code lamp}; prints {@code ADMIN} with the result or {@code ADMIN-FAILED} with the typed
+ * failure), and {@code quit}. Calls run on threads of their own. At the end
  * of its input it closes the container and exits, so that it never outlives the test that drives
  * it. Logs go to standard error.
  */
@@ -83,6 +89,17 @@ public final class HostNode {
       say("SERVING whereAmIAfter(" + millis + ")");
       Thread.sleep(millis);
       return whereAmI();
+    }
+  }
+
+  /**
+   * A provider an administrator may start in a node by class name (its PROVIDERCLASSES allows it
+   * in the system tests); its service is not {@code whereAmI()}, so the nodes do not report it.
+   */
+  public static final class Lamp {
+    @TRADEService
+    public String light() {
+      return "lit";
     }
   }
 
@@ -158,6 +175,10 @@ public final class HostNode {
           Thread t = new Thread(() -> bulk(container, words[1], calls, kib), "bulk " + words[1]);
           t.setDaemon(true);
           t.start();
+        } else if (words[0].equals("admin") && (words.length == 4 || words.length == 5)) {
+          Thread t = new Thread(() -> admin(container, words), "admin " + words[3]);
+          t.setDaemon(true);
+          t.start();
         } else if (words[0].equals("neighbours")) {
           say("NEIGHBOURS " + String.join(",", container.getNeighbours()));
         } else {
@@ -186,6 +207,39 @@ public final class HostNode {
           + Duration.ofNanos(System.nanoTime() - start).toMillis() + " ms");
     } catch (TRADEException e) {
       say("CALL-FAILED " + group + " " + e.getClass().getSimpleName() + ": " + e.getMessage());
+    }
+  }
+
+  /**
+   * {@code admin <credentials> <container> <operation> [<argument>]}: calls the middleware service
+   * {@code operation} of the container named {@code container}, as {@code credentials} ({@code -}:
+   * anonymously, as this container's own principal, which it has not).
+   */
+  private static void admin(TRADEContainer container, String[] words) {
+    String credentials = words[1];
+    String target = words[2];
+    String operation = words[3];
+    String what = operation + "@" + target;
+    try {
+      TRADEServiceInfo service = null;
+      for (TRADEServiceInfo s : container.getAvailableServices(new TRADEServiceConstraints()
+          .inGroups("trade.system").name(operation))) {
+        if (s.getContainerName().equals(target)) {
+          service = s;
+        }
+      }
+      if (service == null) {
+        say("ADMIN-FAILED " + what + " no " + operation + " of " + target + " is known here");
+        return;
+      }
+      Object[] args = words.length == 4 ? new Object[0]
+          : operation.equals("startProvider") ? new Object[] {words[4], List.of("lamp")}
+          : new Object[] {words[4]};
+      Object result = credentials.equals("-") ? service.call(Object.class, args)
+          : container.callAs(credentials, service, Object.class, args);
+      say("ADMIN " + what + " -> " + result);
+    } catch (TRADEException e) {
+      say("ADMIN-FAILED " + what + " " + e.getClass().getSimpleName() + ": " + e.getMessage());
     }
   }
 
