@@ -27,7 +27,7 @@ SILENT_DETECTION_MIN_MS = FAILURE_TIMEOUT_MS - 2 * HEARTBEAT_MS
 SILENT_DETECTION_MS = FAILURE_TIMEOUT_MS + 10000
 REJOIN_S = 15           # a frozen container rejoins at the next announcement (BROADCASTINTERVAL 3 s)
 STEP_S = 10             # anything else
-SLOW_CALLS = 12         # of 1 MiB each, over a 16 Mbit/s link (step 8)
+SLOW_CALLS = 12         # of 1 MiB each, over a 16 Mbit/s link (step 9)
 SLOW_S = 40
 
 
@@ -107,7 +107,7 @@ class Scenario:
         self.log_dir = log_dir
         self.nodes = {h: Node(self.topology, h, log_dir) for h in "ABC"}
         self.results = []
-        self.catching_up = None     # (from, to): while a woken C caught up (step 10)
+        self.catching_up = None     # (from, to): while a woken C caught up (step 11)
 
     def step(self, title, fn):
         if any(not ok for _, ok, _ in self.results):
@@ -327,7 +327,7 @@ class Scenario:
                     if l.consumed:
                         continue
                     # A LEFT printed while C caught up after waking, and its JOINED, seen too late
-                    # by step 10 (they are printed on the notification thread).
+                    # by step 11 (they are printed on the notification thread).
                     m = re.match(r"^LEFT (\S+) ", l.text)
                     if m and self.catching_up and self.catching_up[0] <= l.stamp <= self.catching_up[1]:
                         rejoin = [x for _, x in lines[i + 1:] if x.text.startswith("JOINED %s " % m.group(1))

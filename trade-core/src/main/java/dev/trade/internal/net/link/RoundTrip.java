@@ -3,8 +3,11 @@ package dev.trade.internal.net.link;
 /**
  * One link's round-trip time, measured by the heartbeat: a PING that asks for an echo carries a
  * token (the time it was sent), the peer sends the token back in a PING at once, and the time
- * between is one sample. The estimate is smoothed as TCP smooths its own (RFC 6298: 7/8 of the
- * last estimate plus 1/8 of the new sample), so that one late echo moves it little. One probe is
+ * between is one sample. The estimate is the mean of the first 8 samples, then smoothed as TCP
+ * smooths its own (RFC 6298: 7/8 of the last estimate plus 1/8 of the new sample), so that one
+ * late echo moves it little. Not TCP's first sample alone: the first probe leaves as the link comes
+ * up, often in a JVM still starting, and an estimate that began there took many seconds to
+ * forget it (0.5 s measured 6 s after a start on a loaded machine). One probe is
  * outstanding at a time; an echo of any other token (an old probe's, or a forged one) is ignored.
  * Times are nanoTime readings passed in. Safe for concurrent use.
  */
@@ -17,6 +20,8 @@ final class RoundTrip {
   private long outstanding;
   private boolean waiting;
   private long smoothed = UNKNOWN;
+  private int samples;
+  private long sum; // of the first samples
 
   /** @param created when the link came up: the first probe is due from then on */
   RoundTrip(long created) {
@@ -50,7 +55,12 @@ final class RoundTrip {
     }
     waiting = false;
     long sample = now - token;
-    smoothed = smoothed == UNKNOWN ? sample : smoothed - smoothed / 8 + sample / 8;
+    if (samples < 8) {
+      sum += sample;
+      smoothed = sum / ++samples;
+    } else {
+      smoothed = smoothed - smoothed / 8 + sample / 8;
+    }
     return true;
   }
 
