@@ -27,6 +27,14 @@ FAILURE_TIMEOUT_MS = 3000
 HEARTBEAT_MS = 1000
 STARTUP_S = 20          # JVM start, discovery, links, tables: normally about 1 s
 
+# Every node's access file (PRINCIPALSFILE, docs/security.md): an administrator and an operator, who
+# may not use the middleware services (the reserved group needs the role admin). The secrets are
+# the test's own. Every node may have a Lamp started in it by class name (PROVIDERCLASSES).
+ADMIN = "ops:ops-secret-multihost"
+OPERATOR = "guest:guest-secret-multihost"
+PRINCIPALS = "principal ops admin ops-secret-multihost\nprincipal guest operator guest-secret-multihost\n"
+LAMP = "dev.trade.examples.system.HostNode$Lamp"
+
 
 # A node is killed when this test dies, even by SIGKILL (a node also exits at the end of its input,
 # but a node stopped by SIGSTOP reads nothing): setpriv sets the parent-death signal and execs the
@@ -62,6 +70,7 @@ class Node:
         self.quit_at = None
         self.eof = False
         self.id = None
+        self.listening = None
 
     def start(self, settings):
         """Starts a new incarnation with these TRADE settings (KEY=VALUE strings); see wait_ready."""
@@ -72,6 +81,10 @@ class Node:
         self.eof = False
         self.quit_at = None
         self.id = None
+        principals = os.path.join(self.log_dir, "principals")
+        if not os.path.exists(principals):
+            with open(principals, "w") as f:
+                f.write(PRINCIPALS)
         cmd = DIE_WITH_PARENT + self.topology.exec_prefix(self.host) + [
             java_binary(), "-XX:TieredStopAtLevel=1", "-cp", CLASSPATH,
             "-Djava.util.logging.config.file=" + LOGGING, MAIN_CLASS,
@@ -80,6 +93,8 @@ class Node:
             "CREDENTIALS=multihost-secret",
             "FAILURETIMEOUT=%d" % FAILURE_TIMEOUT_MS,
             "HEARTBEATINTERVAL=%d" % HEARTBEAT_MS,
+            "PRINCIPALSFILE=" + principals,
+            "PROVIDERCLASSES=" + LAMP,
         ] + list(settings)
         self.settings = " ".join(settings) or "(defaults)"
         base = os.path.join(self.log_dir, "%s-%d" % (self.host, self.incarnation))
@@ -95,8 +110,9 @@ class Node:
 
     def wait_ready(self):
         ready = self.expect(r"^READY ", STARTUP_S)
-        m = re.search(r" id=(\S+) pid=(\d+)", ready.text)
+        m = re.search(r" id=(\S+) pid=(\d+) listening=\[([^\]]*)\]", ready.text)
         self.id = m.group(1)
+        self.listening = m.group(3).split(", ")
         if int(m.group(2)) != self.proc.pid:
             raise StepFailure("%s's JVM has pid %s, not the started process %d" %
                               (self.host, m.group(2), self.proc.pid))
@@ -180,6 +196,19 @@ class Node:
             return lines[-count:]
         except OSError as e:
             return ["(cannot read it: %s)" % e]
+
+    def log_contains(self, text, timeout):
+        """Waits until this process's TRADE log (standard error) holds text; returns that line."""
+        deadline = time.time() + timeout
+        while True:
+            with open(self.err_path, errors="replace") as f:
+                for l in f:
+                    if text in l:
+                        return l.rstrip("\n")
+            if time.time() > deadline:
+                raise StepFailure("%s's log did not show '%s' within %.1f s; log: %s" % (
+                    self.host, text, timeout, self.err_path))
+            time.sleep(0.1)
 
     def kill(self, sig=signal.SIGKILL):
         before = time.time()

@@ -1,4 +1,4 @@
-"""Multi-host system test, the scenario: its twelve steps in order, each printed as a PASS or FAIL
+"""Multi-host system test, the scenario: its thirteen steps in order, each printed as a PASS or FAIL
 line with what it measured; a step after a failed one fails as "not run". Scenario.run runs them,
 Scenario.cleanup stops the nodes and removes the namespaces. Used by multihost.py; see
 docs/system-tests.md for what each step proves.
@@ -9,7 +9,7 @@ import signal
 import time
 
 from multihost_net import StepFailure, Topology, run
-from multihost_node import FAILURE_TIMEOUT_MS, HEARTBEAT_MS, STARTUP_S, Node
+from multihost_node import ADMIN, FAILURE_TIMEOUT_MS, HEARTBEAT_MS, LAMP, OPERATOR, STARTUP_S, Node
 
 # Bounds. A killed process's sockets are closed by its kernel, so its neighbours see the loss at
 # once (typically 10-60 ms); a silent one is declared gone after FAILURETIMEOUT, checked every
@@ -27,7 +27,7 @@ SILENT_DETECTION_MIN_MS = FAILURE_TIMEOUT_MS - 2 * HEARTBEAT_MS
 SILENT_DETECTION_MS = FAILURE_TIMEOUT_MS + 10000
 REJOIN_S = 15           # a frozen container rejoins at the next announcement (BROADCASTINTERVAL 3 s)
 STEP_S = 10             # anything else
-SLOW_CALLS = 12         # of 1 MiB each, over a 16 Mbit/s link (step 8)
+SLOW_CALLS = 12         # of 1 MiB each, over a 16 Mbit/s link (step 9)
 SLOW_S = 40
 
 
@@ -62,6 +62,36 @@ def describe_left(delays):
     return "; ".join(parts)
 
 
+def admin(node, credentials, target, operation, argument=None):
+    """Has node call target's middleware service operation as credentials ('-': anonymously);
+    returns the ADMIN or ADMIN-FAILED line's text after the operation's name."""
+    node.send(" ".join(["admin", credentials, target.host, operation] + ([argument] if argument else [])))
+    what = re.escape("%s@%s" % (operation, target.host))
+    line = node.expect(r"^ADMIN(-FAILED)? " + what + " ", STEP_S)
+    return re.sub(r" t=\d+$", "", line.text)
+
+
+def refused(node, credentials, target, operation, argument, missing):
+    """node's call of target's operation is refused with TRADENotAuthorizedException naming what
+    was missing."""
+    text = admin(node, credentials, target, operation, argument)
+    if "ADMIN-FAILED" not in text or "TRADENotAuthorizedException" not in text or missing not in text:
+        raise StepFailure("%s as %s: expected a refusal (TRADENotAuthorizedException: ...%s), got: %s"
+                          % (node.host, credentials.split(":")[0], missing, text))
+    if credentials != "-" and credentials.split(":")[1] in text:
+        raise StepFailure("a refusal shows the secret: " + text)
+
+
+def succeeded(node, target, operation, argument=None, answer=None):
+    """node's call of target's operation as the administrator answers (answer, when given)."""
+    text = admin(node, ADMIN, target, operation, argument)
+    prefix = "ADMIN %s@%s -> " % (operation, target.host)
+    if not text.startswith(prefix) or answer is not None and text[len(prefix):] != answer:
+        raise StepFailure("%s as the administrator: expected %s%s, got: %s" % (
+            node.host, prefix, answer if answer is not None else "...", text))
+    return text[len(prefix):]
+
+
 def call(node, group, expect_answer):
     """Has node call group; returns the call's ms, or raises unless it answered expect_answer."""
     node.send("call " + group)
@@ -77,7 +107,7 @@ class Scenario:
         self.log_dir = log_dir
         self.nodes = {h: Node(self.topology, h, log_dir) for h in "ABC"}
         self.results = []
-        self.catching_up = None     # (from, to): while a woken C caught up (step 10)
+        self.catching_up = None     # (from, to): while a woken C caught up (step 11)
 
     def step(self, title, fn):
         if any(not ok for _, ok, _ in self.results):
@@ -174,6 +204,46 @@ class Scenario:
             ba = call(B, "host-A", "A on [10.200.1.1]")
             return "A->B %s ms, B->A %s ms through the new C" % (ab, ba)
 
+        def administered():
+            # Refused: anonymous, a wrong secret, a principal without the role admin; from B, whose
+            # calls reach A through C. The providing container audits each refusal.
+            refused(B, "-", A, "shutdown", None, "the call proves no principal")
+            refused(B, ADMIN.split(":")[0] + ":not-the-secret", A, "shutdown", None,
+                    "is not valid (unknown principal or wrong secret)")
+            refused(B, OPERATOR, C, "disconnect", B.id, "principal 'guest' has the roles operator")
+            A.log_contains("refused: shutdown() of container A", STEP_S)
+            # Done by the administrator, from A: B's description (through C), with its link's
+            # round-trip time, measured from the heartbeat over the veth pair.
+            deadline = time.time() + STEP_S
+            while True:
+                described = succeeded(A, B, "describeContainer")
+                rtt = re.search(r"roundTripMicros=\{%s=([0-9.E]+)\}" % re.escape(C.id), described)
+                if rtt or time.time() > deadline:
+                    break
+            if not rtt or "name=B," not in described or "links=[%s]" % C.id not in described:
+                raise StepFailure("B's description lacks its name, its one link to C or that link's"
+                                  " round-trip time: " + described)
+            succeeded(A, B, "startProvider", LAMP, "[light()]")
+            succeeded(A, B, "stopProvider", LAMP, "1")
+            # C's link to B, closed and dialled again by the administrator on A: B's services leave
+            # A and C, A's and C's leave B, and all come back.
+            t0 = time.time()
+            succeeded(A, C, "disconnect", B.id, "true")
+            for n, others in ((A, "B"), (B, "AC"), (C, "B")):
+                for other in others:
+                    n.expect(left(other), STEP_S)
+            port = B.listening[0].split("@")[1]
+            succeeded(A, C, "connect", "10.200.2.2@" + port, "null")
+            times = []
+            for n, others in ((A, "B"), (B, "AC"), (C, "B")):
+                for other in others:
+                    times.append(n.expect(joined(other), REJOIN_S).stamp - t0)
+            self.check_links()
+            return ("refused (anonymous, wrong secret, operator; audited); B described from A, its"
+                    " link to C %s us; a Lamp started and stopped on B; C's link to B disconnected"
+                    " and connected again, every service back within %.2f s") % (
+                        rtt.group(1), max(times))
+
         def slow_link():
             # A's link to C at 16 Mbit/s (2 MB/s): 12 MiB of calls take about six seconds to leave
             # A, twice FAILURETIMEOUT, while C reads all along. No link may be taken for dead.
@@ -257,7 +327,7 @@ class Scenario:
                     if l.consumed:
                         continue
                     # A LEFT printed while C caught up after waking, and its JOINED, seen too late
-                    # by step 10 (they are printed on the notification thread).
+                    # by step 11 (they are printed on the notification thread).
                     m = re.match(r"^LEFT (\S+) ", l.text)
                     if m and self.catching_up and self.catching_up[0] <= l.stamp <= self.catching_up[1]:
                         rejoin = [x for _, x in lines[i + 1:] if x.text.startswith("JOINED %s " % m.group(1))
@@ -280,6 +350,8 @@ class Scenario:
                   killed)
         self.step("C restarted: services rejoin on both sides", restarted)
         self.step("calls A->B and B->A work again", forwarding_again)
+        self.step("middleware operations across hosts: done with credentials, refused without",
+                  administered)
         self.step("slow link: calls that take longer than FAILURETIMEOUT to leave", slow_link)
         self.step("C frozen (SIGSTOP): left on A and B after FAILURETIMEOUT (%d..%d ms)"
                   % (SILENT_DETECTION_MIN_MS, SILENT_DETECTION_MS), frozen)

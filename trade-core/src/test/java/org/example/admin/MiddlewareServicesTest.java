@@ -44,6 +44,18 @@ class MiddlewareServicesTest {
     }
   }
 
+  public static final class Gripper {
+    @TRADEService
+    public String grip() {
+      return "gripped";
+    }
+
+    @TRADEService
+    public String slip() {
+      throw new IllegalStateException("slipped");
+    }
+  }
+
   private Path accessFile() throws Exception {
     Path f = dir.resolve("principals");
     Files.writeString(f, "principal alice admin alice-secret-1\nprincipal bob operator bob-secret-22\n");
@@ -181,6 +193,86 @@ class MiddlewareServicesTest {
     Await.until(WAIT, () -> closed(b), "b closed");
     Map<String, Collection<String>> after = Map.of("hub", List.of("a"), "a", List.of("hub"));
     Await.until(WAIT, () -> after.equals(graph(a)), "b left the graph");
+  }
+
+  @Test
+  void aContainersDescriptionCarriesItsCallStatisticsAndItsLinksRoundTrips() throws Exception {
+    TRADEContainer robot = hub("robot");
+    TRADEContainer laptop = spoke("laptop", robot);
+    robot.registerAllServices(new Gripper(), "arm");
+    TRADEServiceInfo describe = system(laptop, "describeContainer", "robot");
+    assertEquals(List.of(), describeAs(laptop, describe).get("statistics"),
+        "no statistics before they are switched on");
+
+    system(laptop, "setCallStatistics", "robot").call(void.class, true);
+    TRADEServiceInfo grip = first(laptop, new TRADEServiceConstraints().name("grip"));
+    TRADEServiceInfo slip = first(laptop, new TRADEServiceConstraints().name("slip"));
+    for (int i = 0; i < 3; i++) {
+      assertEquals("gripped", grip.call(String.class));
+    }
+    assertThrows(TRADEException.class, () -> slip.call(String.class));
+
+    Map<String, Object> robotSays = describeAs(laptop, describe);
+    Map<String, Object> gripStats = statisticsOf(robotSays, "grip()");
+    assertEquals(3L, gripStats.get("calls"), gripStats.toString());
+    assertEquals(0L, gripStats.get("failures"), gripStats.toString());
+    assertTrue((Double) gripStats.get("p50Micros") > 0, gripStats.toString());
+    assertTrue((Double) gripStats.get("p99Micros") >= (Double) gripStats.get("p50Micros"),
+        gripStats.toString());
+    Map<String, Object> slipStats = statisticsOf(robotSays, "slip()");
+    assertEquals(1L, slipStats.get("calls"), slipStats.toString());
+    assertEquals(1L, slipStats.get("failures"), slipStats.toString());
+
+    // The first probe goes out as the link comes up; its echo comes within the link's first
+    // round trip.
+    String laptopId = (String) describeAs(laptop, system(laptop, "describeContainer", "laptop"))
+        .get("id");
+    Await.until(WAIT, () -> roundTripsOf(describeAs(laptop, describe)).containsKey(laptopId),
+        "robot's round trip to laptop, in its description");
+    Map<String, Object> rtt = roundTripsOf(describeAs(laptop, describe));
+    assertEquals(List.of(laptopId), List.copyOf(rtt.keySet()), rtt.toString());
+    assertTrue((Double) rtt.get(laptopId) > 0, rtt.toString());
+
+    Await.until(WAIT, () -> roundTrips(laptop).keySet().equals(java.util.Set.of("robot",
+        "laptop")) && roundTrips(laptop).values().stream().allMatch(m -> m.size() == 1),
+        "the graph with round trips, from laptop: " + roundTrips(laptop));
+    Map<String, Map<String, Double>> graph = laptop.getContainerRoundTrips(ADMIN);
+    assertTrue(graph.get("robot").get("laptop") > 0, graph.toString());
+    assertTrue(graph.get("laptop").get("robot") > 0, graph.toString());
+    assertThrows(TRADENotAuthorizedException.class, () -> laptop.getContainerRoundTrips(OPERATOR));
+  }
+
+  @SuppressWarnings("unchecked")
+  private static Map<String, Object> describeAs(TRADEContainer from, TRADEServiceInfo describe) {
+    try {
+      return from.callAs(ADMIN, describe, Map.class);
+    } catch (TRADEException e) {
+      throw new AssertionError("describeContainer as an admin failed", e);
+    }
+  }
+
+  @SuppressWarnings("unchecked")
+  private static Map<String, Object> statisticsOf(Map<String, Object> description,
+      String service) {
+    for (Map<String, Object> m : (List<Map<String, Object>>) description.get("statistics")) {
+      if (m.get("service").equals(service)) {
+        return m;
+      }
+    }
+    throw new AssertionError("no statistics of " + service + " in " + description);
+  }
+
+  @SuppressWarnings("unchecked")
+  private static Map<String, Object> roundTripsOf(Map<String, Object> description) {
+    return (Map<String, Object>) description.get("roundTripMicros");
+  }
+
+  private static Map<String, Map<String, Double>> roundTrips(TRADEContainer c) {
+    try {
+      return c.getContainerRoundTrips(ADMIN);
+    } catch (TRADEException e) {
+      return Map.of();
+    }
   }
 
   private static TRADEServiceInfo first(TRADEContainer c, TRADEServiceConstraints constraints) {

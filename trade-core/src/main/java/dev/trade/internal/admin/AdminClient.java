@@ -12,6 +12,7 @@ import dev.trade.internal.registry.ServiceDescriptor;
 import dev.trade.internal.system.SystemGroup;
 import java.util.ArrayList;
 import java.util.Collection;
+import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -93,12 +94,33 @@ public final class AdminClient {
       List<?> ids = call(credentials, c.getKey(), "neighbours", List.class);
       List<String> linked = new ArrayList<>();
       for (Object id : ids) {
-        linked.add(names.getOrDefault(String.valueOf(id), String.valueOf(id)));
+        linked.add(nameOf(names, id));
       }
       linked.sort(null);
       graph.put(c.getValue(), List.copyOf(linked));
     }
     return graph;
+  }
+
+  /**
+   * The graph with each link's round-trip time: each container this one knows, by name, with the
+   * microseconds to each container it links to whose time it has measured, by name, as each says
+   * itself (its {@code roundTrips} service, called as {@code credentials}).
+   */
+  public Map<String, Map<String, Double>> roundTrips(String credentials) throws TRADEException {
+    Map<String, String> names = containerNames();
+    Map<String, Map<String, Double>> graph = new TreeMap<>();
+    for (Map.Entry<String, String> c : names.entrySet()) {
+      Map<?, ?> times = call(credentials, c.getKey(), "roundTrips", Map.class);
+      Map<String, Double> linked = new TreeMap<>();
+      times.forEach((id, micros) -> linked.put(nameOf(names, id), ((Number) micros).doubleValue()));
+      graph.put(c.getValue(), Collections.unmodifiableMap(linked));
+    }
+    return graph;
+  }
+
+  private static String nameOf(Map<String, String> names, Object id) {
+    return names.getOrDefault(String.valueOf(id), String.valueOf(id));
   }
 
   /** Every known container's {@code describeContainer()}, this one's first. */

@@ -19,6 +19,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Set;
+import java.util.TreeMap;
 import java.util.UUID;
 
 /**
@@ -64,6 +65,12 @@ public final class AdminService {
     boolean disconnect(UUID container);
 
     List<String> neighbours();
+
+    /** The smoothed round-trip time of each direct link measured so far, in ns, by peer id. */
+    Map<String, Long> roundTrips();
+
+    /** This container's call statistics (the call log service's {@code callStatistics}). */
+    List<Map<String, Object>> callStatistics();
 
     /** This container's own services, the reserved group's included. */
     List<LocalService> services();
@@ -183,10 +190,23 @@ public final class AdminService {
   }
 
   /**
+   * The smoothed round-trip time of each direct link whose peer has echoed a heartbeat probe, in
+   * microseconds, by the peer's id (links not measured yet are left out).
+   */
+  @TRADEService
+  public Map<String, Double> roundTrips() {
+    Map<String, Double> result = new TreeMap<>();
+    container.roundTrips().forEach((id, nanos) -> result.put(id, nanos / 1000.0));
+    return result;
+  }
+
+  /**
    * This container: {@code id}, {@code name}, {@code host} (String), {@code addresses} (its listen
    * addresses as {@code ip@port}), {@code uptimeMillis} (Long), {@code services} (its services'
    * signatures with their groups, the reserved group's included), {@code links} (its neighbours'
-   * ids), {@code discovering} and {@code broadcasting} (Boolean).
+   * ids), {@code roundTripMicros} (as {@link #roundTrips}), {@code discovering} and
+   * {@code broadcasting} (Boolean), {@code statistics} (per service calls, failures and latency,
+   * as the call log service's {@code callStatistics}: empty unless they are or were switched on).
    */
   @TRADEService
   public Map<String, Object> describeContainer() {
@@ -202,8 +222,10 @@ public final class AdminService {
     }
     m.put("services", services);
     m.put("links", List.copyOf(container.neighbours()));
+    m.put("roundTripMicros", roundTrips());
     m.put("discovering", container.isDiscovering());
     m.put("broadcasting", container.isBroadcasting());
+    m.put("statistics", container.callStatistics());
     return m;
   }
 

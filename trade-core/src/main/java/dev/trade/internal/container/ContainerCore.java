@@ -626,6 +626,17 @@ public final class ContainerCore implements ServiceCaller {
     }
 
     @Override
+    public Map<String, Long> roundTrips() {
+      Network n = network;
+      return n == null ? Map.of() : n.roundTrips();
+    }
+
+    @Override
+    public List<Map<String, Object>> callStatistics() {
+      return hooks.statistics();
+    }
+
+    @Override
     public List<LocalService> services() {
       List<LocalService> result = new ArrayList<>();
       for (Object p : registry.providers()) {

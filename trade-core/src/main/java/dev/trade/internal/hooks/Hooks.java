@@ -9,6 +9,7 @@ import dev.trade.internal.registry.Query;
 import dev.trade.internal.registry.Registry;
 import java.time.Duration;
 import java.util.List;
+import java.util.Map;
 import java.util.function.Function;
 
 /**
@@ -67,6 +68,14 @@ public final class Hooks {
    */
   public void startCallLog(String file, List<String> groups) throws TRADEException {
     callLog.startCallLog(file, groups, 0);
+  }
+
+  /**
+   * This container's call statistics, as its {@code callStatistics} service returns them: empty
+   * unless they are or were switched on.
+   */
+  public List<Map<String, Object>> statistics() {
+    return callLog.callStatistics();
   }
 
   /** The requester's side, behind the static API. */

@@ -1,6 +1,7 @@
 package dev.trade.internal.net;
 
 import dev.trade.internal.net.link.Frames;
+import dev.trade.internal.net.link.Heartbeat;
 import dev.trade.internal.net.link.Link;
 import dev.trade.internal.net.link.LinkHandler;
 import dev.trade.internal.net.link.Wire;
@@ -11,8 +12,8 @@ import java.io.IOException;
 /**
  * What a container does with each frame its links read, on the reading thread: calls and replies
  * take the fast path ({@link RemoteCalls}), replication frames go to the control thread in order
- * (copies that are already stale are dropped here, before they queue), heartbeats only count as
- * life. Safe for concurrent use.
+ * (copies that are already stale are dropped here, before they queue), heartbeats count as life
+ * and time the link ({@link Heartbeat#pinged}). Safe for concurrent use.
  */
 final class FrameDispatcher implements LinkHandler {
   /** Why a link closed when its peer said GOODBYE: an orderly close. */
@@ -21,16 +22,19 @@ final class FrameDispatcher implements LinkHandler {
   private final RemoteCalls calls;
   private final Replication replication;
   private final Network network;
+  private final Heartbeat heartbeat;
   private final long backlogLimit;
 
   /**
    * @param backlogLimit how many bytes of one link's replication frames may wait for the control
    *     thread (see {@link ControlBacklog}); a link that sends more is closed
    */
-  FrameDispatcher(RemoteCalls calls, Replication replication, Network network, long backlogLimit) {
+  FrameDispatcher(RemoteCalls calls, Replication replication, Network network,
+      Heartbeat heartbeat, long backlogLimit) {
     this.calls = calls;
     this.replication = replication;
     this.network = network;
+    this.heartbeat = heartbeat;
     this.backlogLimit = backlogLimit;
   }
 
@@ -54,6 +58,7 @@ final class FrameDispatcher implements LinkHandler {
         }
         return type == Wire.CALL ? calls.onCall(link, payload) : calls.onReply(link, payload);
       case Wire.PING:
+        heartbeat.pinged(link, payload);
         break;
       case Wire.GOODBYE:
         link.close(GOODBYE);

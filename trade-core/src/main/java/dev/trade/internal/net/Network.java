@@ -28,6 +28,7 @@ import java.net.Socket;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.TreeMap;
 import java.util.UUID;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.Executor;
@@ -104,7 +105,9 @@ public final class Network implements AutoCloseable {
         this::onControlAfter, this::unreachable);
     // The frames of a burst of state changes leave together (one system call per link).
     this.control = new ControlExecutor(daemon("trade-control-" + name), replication::flushQueued);
-    this.dispatch = new FrameDispatcher(calls, replication, this,
+    this.heartbeat = new Heartbeat(live, settings.heartbeatInterval(), settings.failureTimeout(),
+        scheduler, workers);
+    this.dispatch = new FrameDispatcher(calls, replication, this, heartbeat,
         FrameDispatcher.backlogLimit(settings.maxFrameSize()));
     if (settings.defaultCredentialsBeyondThisHost()) {
       LOG.log(Level.WARNING, "{0}: CREDENTIALS has its published default value, and this container"
@@ -145,8 +148,6 @@ public final class Network implements AutoCloseable {
         });
     this.discovery = new Finder(settings, self, name, connector, this::linkedOrLinking,
         replication::reachable, scheduler, () -> closed);
-    this.heartbeat = new Heartbeat(live, settings.heartbeatInterval(), settings.failureTimeout(),
-        scheduler, workers);
     registry.addListener(
         (added, removed) -> replication.localChanged(added, removed, this::onControl));
   }
@@ -204,6 +205,21 @@ public final class Network implements AutoCloseable {
   /** Ids of the containers this one has a direct link to. */
   public List<String> neighbours() {
     return links.keySet().stream().map(UUID::toString).toList();
+  }
+
+  /**
+   * The smoothed round-trip time of each direct link whose peer has echoed a heartbeat probe, in
+   * nanoseconds, by the peer's id; links not measured yet are left out.
+   */
+  public Map<String, Long> roundTrips() {
+    Map<String, Long> result = new TreeMap<>();
+    for (Link l : links.values()) {
+      long rtt = l.roundTripNanos();
+      if (rtt >= 0) {
+        result.put(l.peerKey, rtt);
+      }
+    }
+    return result;
   }
 
   /**
@@ -325,7 +341,7 @@ public final class Network implements AutoCloseable {
       link.leave(); // close() may have gone over the live links already
     }
     link.start(dispatch, readWatch);
-    Heartbeat.greet(link);
+    heartbeat.greet(link);
   }
 
   /**

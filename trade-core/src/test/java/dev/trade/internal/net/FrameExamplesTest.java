@@ -15,6 +15,7 @@ import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.codec.Limits;
 import dev.trade.internal.net.link.Frames;
 import dev.trade.internal.net.link.Handshake;
+import dev.trade.internal.net.link.Heartbeat;
 import dev.trade.internal.net.link.Wire;
 import dev.trade.internal.net.mesh.Digest;
 import dev.trade.internal.net.mesh.StateFrames;
@@ -282,5 +283,11 @@ class FrameExamplesTest {
   @Test
   void pingExample() throws Exception {
     assertDocumented("ping", Frames.finish(Frames.start(Wire.PING, 0)));
+  }
+
+  @Test
+  void probeAndEchoExamples() throws Exception {
+    assertDocumented("ping-probe", Heartbeat.ping(Heartbeat.PROBE, 0x00000a1b2c3d4e5fL));
+    assertDocumented("ping-echo", Heartbeat.ping(Heartbeat.ECHO, 0x00000a1b2c3d4e5fL));
   }
 }

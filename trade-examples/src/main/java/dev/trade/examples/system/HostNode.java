@@ -50,6 +50,8 @@ import java.util.concurrent.CompletionException;
  * LOCKS actuate(java.lang.String)@A=B:6f3e...:12 t=...
  * RELEASED 6f3e... t=...
  * NEIGHBOURS &lt;id&gt;,&lt;id&gt; t=...
+ * ADMIN describeContainer@B -> {id=..., name=B, ...} t=...
+ * ADMIN-FAILED shutdown@A TRADENotAuthorizedException: Not authorized: ... t=...
  * BYE t=...
  * </pre>
  *
@@ -64,9 +66,14 @@ import java.util.concurrent.CompletionException;
  * {@code LOCK-FAILED}), {@code under <group>} (call {@code actuate(String)} in that group under
  * the lock taken last, or without a lock if none; the service prints {@code ACTUATED by <caller>}
  * where it runs), {@code release} (release the lock taken last), {@code locks} (every holder:
- * service, container, holder's container, lock id, token), and {@code quit}. Calls and lock
- * commands run on threads of their own. At the end of its input it closes the container and
- * exits, so that it never outlives the test that drives it. Logs go to standard error.
+ * service, container, holder's container, lock id, token),
+ * {@code admin <credentials> <container> <operation> [<argument>]} (calls that container's
+ * middleware service, docs/middleware-services.md, as {@code <principal>:<secret>}, or anonymously
+ * for {@code -}; {@code startProvider} takes a class name and registers it in the group
+ * {@code lamp}; prints {@code ADMIN} with the result or {@code ADMIN-FAILED} with the typed
+ * failure), and {@code quit}. Calls, lock and admin commands run on threads of their own. At the end
+ * of its input it closes the container and exits, so that it never outlives the test that drives
+ * it. Logs go to standard error.
  */
 public final class HostNode {
   private static final Duration CALL_TIMEOUT = Duration.ofSeconds(5);
@@ -113,6 +120,17 @@ public final class HostNode {
     public String actuate(String by) {
       say("ACTUATED by " + by);
       return name;
+    }
+  }
+
+  /**
+   * A provider an administrator may start in a node by class name (its PROVIDERCLASSES allows it
+   * in the system tests); its service is not {@code whereAmI()}, so the nodes do not report it.
+   */
+  public static final class Lamp {
+    @TRADEService
+    public String light() {
+      return "lit";
     }
   }
 
@@ -197,6 +215,8 @@ public final class HostNode {
           background(HostNode::release, "release");
         } else if (words[0].equals("locks") && words.length == 1) {
           background(() -> locks(container), "locks");
+        } else if (words[0].equals("admin") && (words.length == 4 || words.length == 5)) {
+          background(() -> admin(container, words), "admin " + words[3]);
         } else if (words[0].equals("neighbours")) {
           say("NEIGHBOURS " + String.join(",", container.getNeighbours()));
         } else {
@@ -304,6 +324,39 @@ public final class HostNode {
           + Duration.ofNanos(System.nanoTime() - start).toMillis() + " ms");
     } catch (TRADEException e) {
       say("CALL-FAILED " + group + " " + e.getClass().getSimpleName() + ": " + e.getMessage());
+    }
+  }
+
+  /**
+   * {@code admin <credentials> <container> <operation> [<argument>]}: calls the middleware service
+   * {@code operation} of the container named {@code container}, as {@code credentials} ({@code -}:
+   * anonymously, as this container's own principal, which it has not).
+   */
+  private static void admin(TRADEContainer container, String[] words) {
+    String credentials = words[1];
+    String target = words[2];
+    String operation = words[3];
+    String what = operation + "@" + target;
+    try {
+      TRADEServiceInfo service = null;
+      for (TRADEServiceInfo s : container.getAvailableServices(new TRADEServiceConstraints()
+          .inGroups("trade.system").name(operation))) {
+        if (s.getContainerName().equals(target)) {
+          service = s;
+        }
+      }
+      if (service == null) {
+        say("ADMIN-FAILED " + what + " no " + operation + " of " + target + " is known here");
+        return;
+      }
+      Object[] args = words.length == 4 ? new Object[0]
+          : operation.equals("startProvider") ? new Object[] {words[4], List.of("lamp")}
+          : new Object[] {words[4]};
+      Object result = credentials.equals("-") ? service.call(Object.class, args)
+          : container.callAs(credentials, service, Object.class, args);
+      say("ADMIN " + what + " -> " + result);
+    } catch (TRADEException e) {
+      say("ADMIN-FAILED " + what + " " + e.getClass().getSimpleName() + ": " + e.getMessage());
     }
   }
 

@@ -1,7 +1,9 @@
 package dev.trade.internal.net.link;
 
+import dev.trade.internal.codec.ByteSink;
 import dev.trade.internal.time.Scheduler;
 import java.io.IOException;
+import java.nio.ByteBuffer;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Collection;
@@ -27,13 +29,24 @@ import java.util.concurrent.TimeUnit;
  * overloaded host), and the frames its peers sent meanwhile still wait unread in the socket
  * buffers. Every link then gets a full {@code FAILURETIMEOUT} from the end of the stall, so that
  * a pause here never closes the links of healthy peers. Thread-safe: beats run on the timer.
+ *
+ * <p>Every PING the heartbeat sends is also a round-trip probe ({@link RoundTrip}): it carries a
+ * token the peer echoes at once, in a PING of its own. A link so busy that it needs no PING for
+ * {@link #PROBE_EVERY} intervals gets one anyway, so that its round-trip time stays current.
  */
 public final class Heartbeat {
-  private static final byte[] PING = Frames.finish(Frames.start(Wire.PING, 0));
+  /** A busy link gets a probe after this many intervals without one. */
+  static final int PROBE_EVERY = 10;
+  /** The first byte of a PING payload that asks for an echo, and of the echo. */
+  public static final int PROBE = 1;
+  public static final int ECHO = 2;
+  /** A probe's or an echo's payload: the kind, then the u64 token. */
+  static final int PROBE_PAYLOAD = 1 + 8;
 
   private final Collection<Link> links;
   private final long interval;
   private final long silence;
+  private final long probeEvery;
   private final Scheduler scheduler;
   private final ScheduledExecutorService timer;
   private final ExecutorService workers;
@@ -49,6 +62,7 @@ public final class Heartbeat {
     this.links = links;
     this.interval = interval.toNanos();
     this.silence = silence.toNanos();
+    this.probeEvery = PROBE_EVERY * this.interval;
     this.scheduler = scheduler;
     this.timer = scheduler.timer();
     this.workers = workers;
@@ -58,13 +72,53 @@ public final class Heartbeat {
    * Pings a link that just came up, at once: its peer counts silence from the handshake on, while
    * this side's first beat for it may be one and a half intervals away and its first other frames
    * wait for the control thread. Without it, a new link had the least slack of all against a
-   * stall of this process. Called on the thread that made the link; never blocks on a new link.
+   * stall of this process. It is the link's first round-trip probe too. Called on the thread that
+   * made the link; never blocks on a new link.
    */
-  public static void greet(Link l) {
+  public void greet(Link l) {
     try {
-      l.send(PING);
+      probe(l);
     } catch (IOException e) {
       // send() closed the link; its reader reports it.
+    }
+  }
+
+  /** Sends {@code l} a PING that is a round-trip probe, timed at the moment it leaves. */
+  private void probe(Link l) throws IOException {
+    l.send(ping(PROBE, l.roundTrip.sent(scheduler.nanoTime())));
+  }
+
+  /** A PING frame whose payload is {@code kind} ({@link #PROBE} or {@link #ECHO}) and a token. */
+  public static byte[] ping(int kind, long token) {
+    ByteSink sink = Frames.start(Wire.PING, PROBE_PAYLOAD);
+    sink.writeByte(kind);
+    sink.writeLong(token);
+    return Frames.finish(sink);
+  }
+
+  /** A PING arrived on {@code l} (on its reading thread): see {@link #pinged(Link, byte[], long)}. */
+  public void pinged(Link l, byte[] payload) {
+    pinged(l, payload, scheduler.nanoTime());
+  }
+
+  /**
+   * A PING with {@code payload} arrived on {@code l} at {@code now}: a probe is echoed at once, an
+   * echo is timed; any other payload is ignored, as docs/protocol.md asks (an empty one is the
+   * plain heartbeat of a peer that does not measure).
+   */
+  void pinged(Link l, byte[] payload, long now) {
+    if (payload.length != PROBE_PAYLOAD) {
+      return;
+    }
+    long token = ByteBuffer.wrap(payload, 1, 8).getLong();
+    if (payload[0] == PROBE) {
+      try {
+        l.send(ping(ECHO, token));
+      } catch (IOException e) {
+        // The link is closing; its reading reports why.
+      }
+    } else if (payload[0] == ECHO) {
+      l.roundTrip.echoed(token, now);
     }
   }
 
@@ -116,7 +170,7 @@ public final class Heartbeat {
         // silent peer is declared gone after FAILURETIMEOUT, not up to one interval later.
         timer.schedule(() -> checkSilence(l), silence - quiet, TimeUnit.NANOSECONDS);
       }
-      if (now - l.lastSent >= interval / 2 && !l.pinging) {
+      if ((now - l.lastSent >= interval / 2 || l.roundTrip.due(now, probeEvery)) && !l.pinging) {
         if (idle == null) {
           idle = new ArrayList<>();
         }
@@ -141,7 +195,7 @@ public final class Heartbeat {
       workers.execute(() -> {
         for (Link l : idle) {
           try {
-            l.send(PING);
+            probe(l);
           } catch (IOException e) {
             // The link is closing; its reading reports why.
           } finally {

@@ -76,6 +76,16 @@ public final class Link {
    * nothing).
    */
   volatile boolean pinging;
+  /** This link's round-trip time, from the heartbeat's probes. */
+  final RoundTrip roundTrip = new RoundTrip(System.nanoTime());
+
+  /**
+   * The smoothed round-trip time of this link in nanoseconds, measured by heartbeat probes the
+   * peer echoes; -1 before the first echo (or always, with a peer that does not echo).
+   */
+  public long roundTripNanos() {
+    return roundTrip.nanos();
+  }
 
   /**
    * A caller waits for {@code reply} over this link without reading it (an asynchronous call, which

@@ -11,6 +11,7 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
+import java.nio.ByteBuffer;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Collections;
@@ -198,6 +199,76 @@ class HeartbeatTest {
       assertEquals(Collections.nCopies(LINKS, 400L), delays, "each looked at again at 3 s");
     } finally {
       recording.shutdownNow();
+    }
+  }
+
+  /**
+   * Every heartbeat PING is a probe the peer echoes at once; the echo of its token times the
+   * link. A busy link, which needs no PING, gets a probe after PROBE_EVERY intervals anyway.
+   */
+  @Test
+  void pingsAreProbesWhoseEchoesTimeTheLink() throws IOException {
+    long t = started;
+    quietSince(t);
+    Link busy = links.get(0);
+    busy.lastSent = t + 900 * MS;
+    heartbeat.beat(t + 1_000 * MS);
+    workers.runAll();
+    Link idle = links.get(1);
+    byte[] probe = pingPayload(sockets.get(3));
+    assertEquals(Heartbeat.PROBE_PAYLOAD, probe.length, "a probe's payload");
+    assertEquals(Heartbeat.PROBE, probe[0]);
+    long token = ByteBuffer.wrap(probe, 1, 8).getLong();
+    assertEquals(-1, idle.roundTripNanos(), "not echoed yet");
+    heartbeat.pinged(idle, echo(token + 1), token + 300_000);
+    assertEquals(-1, idle.roundTripNanos(), "an echo of another token counts for nothing");
+    heartbeat.pinged(idle, echo(token), token + 300_000);
+    assertEquals(300_000, idle.roundTripNanos());
+    assertEquals(null, pingPayload(sockets.get(1)), "the busy link needs no PING yet");
+
+    long later = t + Heartbeat.PROBE_EVERY * 1_000 * MS;
+    for (Link l : links) {
+      l.lastReceived = later - 100 * MS;
+      l.lastSent = later - 100 * MS;
+    }
+    heartbeat.beat(later);
+    workers.runAll();
+    byte[] busyProbe = pingPayload(sockets.get(1));
+    assertTrue(busyProbe != null && busyProbe[0] == Heartbeat.PROBE,
+        "a busy link is probed every PROBE_EVERY intervals");
+  }
+
+  @Test
+  void aProbeIsEchoedWithItsTokenAndOtherPayloadsAreIgnored() throws IOException {
+    Link l = links.get(2);
+    heartbeat.pinged(l, new byte[0], started);
+    heartbeat.pinged(l, new byte[] {Heartbeat.PROBE, 1, 2}, started);
+    byte[] probe = echo(0x0102030405060708L);
+    probe[0] = Heartbeat.PROBE;
+    heartbeat.pinged(l, probe, started);
+    byte[] answer = pingPayload(sockets.get(5));
+    assertEquals(Heartbeat.PROBE_PAYLOAD, answer.length, "only the probe is answered");
+    assertEquals(Heartbeat.ECHO, answer[0]);
+    assertEquals(0x0102030405060708L, ByteBuffer.wrap(answer, 1, 8).getLong());
+    assertEquals(null, pingPayload(sockets.get(5)), "one answer");
+  }
+
+  private static byte[] echo(long token) {
+    return ByteBuffer.allocate(Heartbeat.PROBE_PAYLOAD).put((byte) Heartbeat.ECHO).putLong(token)
+        .array();
+  }
+
+  /** The payload of the PING frame waiting on {@code far}; null if none comes soon. */
+  private static byte[] pingPayload(Socket far) throws IOException {
+    far.setSoTimeout(200);
+    try {
+      DataInputStream in = new DataInputStream(far.getInputStream());
+      int length = in.readInt();
+      in.readUnsignedByte();
+      assertEquals(Wire.PING, in.readUnsignedByte(), "frame type");
+      return in.readNBytes(length - 2);
+    } catch (java.net.SocketTimeoutException e) {
+      return null;
     }
   }
 
