@@ -9,8 +9,7 @@ import java.lang.reflect.Method;
 import java.util.HashMap;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.Executor;
-import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.CompletionException;
 import java.util.function.Supplier;
 
 /**
@@ -37,10 +36,10 @@ final class ProxyHandler implements InvocationHandler {
   private final Proxies.Services services;
   private final TRADEServiceConstraints constraints;
   private final String constraintsText;
-  private final Supplier<Executor> executor;
+  private final Supplier<IllegalStateException> closedError;
 
   ProxyHandler(Class<?> type, Map<Method, MethodModel> models, Proxies.Services services,
-      TRADEServiceConstraints constraints, Supplier<Executor> executor) {
+      TRADEServiceConstraints constraints, Supplier<IllegalStateException> closedError) {
     this.type = type;
     Map<Method, Slot> s = new HashMap<>();
     models.forEach((m, model) -> s.put(m, new Slot(model)));
@@ -48,7 +47,7 @@ final class ProxyHandler implements InvocationHandler {
     this.services = services;
     this.constraints = constraints;
     this.constraintsText = constraints == null ? "" : " " + constraints;
-    this.executor = executor;
+    this.closedError = closedError;
   }
 
   @Override
@@ -65,24 +64,61 @@ final class ProxyHandler implements InvocationHandler {
         throw model.failure(e);
       }
     }
-    CompletableFuture<Object> result = new CompletableFuture<>();
-    try {
-      executor.get().execute(() -> {
-        try {
-          result.complete(call(slot, args));
-        } catch (TRADEException e) {
-          result.completeExceptionally(model.failure(e));
-        } catch (RuntimeException | Error e) {
-          result.completeExceptionally(e);
-        }
-      });
-    } catch (RejectedExecutionException e) {
-      result.completeExceptionally(new IllegalStateException("the container is closed", e));
+    IllegalStateException closed = closedError.get();
+    if (closed != null) {
+      return CompletableFuture.failedFuture(closed);
     }
+    return callAsync(slot, args);
+  }
+
+  /**
+   * The asynchronous call: found on the caller's thread (a lookup in the container's own table),
+   * then sent without a thread waiting for the reply.
+   */
+  private CompletableFuture<Object> callAsync(Slot slot, Object[] args) {
+    MethodModel model = slot.model;
+    TRADEServiceInfo info;
+    try {
+      info = bound(slot);
+    } catch (TRADEException e) {
+      return CompletableFuture.failedFuture(model.failure(e));
+    }
+    CompletableFuture<?> call;
+    try {
+      call = info.callAsync(model.callType, args);
+    } catch (RuntimeException e) { // the container closed while we looked
+      return CompletableFuture.failedFuture(e);
+    }
+    CompletableFuture<Object> result = new CompletableFuture<>();
+    call.whenComplete((value, failure) -> {
+      if (failure == null) {
+        result.complete(value);
+        return;
+      }
+      Throwable cause = failure instanceof CompletionException && failure.getCause() != null
+          ? failure.getCause() : failure;
+      if (cause instanceof TRADEException) {
+        unbindIfGone(slot, (TRADEException) cause);
+        result.completeExceptionally(model.failure((TRADEException) cause));
+      } else {
+        result.completeExceptionally(cause);
+      }
+    });
     return result;
   }
 
   private Object call(Slot slot, Object[] args) throws TRADEException {
+    TRADEServiceInfo info = bound(slot);
+    try {
+      return info.call(slot.model.callType, args);
+    } catch (TRADEException e) {
+      unbindIfGone(slot, e);
+      throw e;
+    }
+  }
+
+  /** The service {@code slot}'s method calls now: the one found before while it is known. */
+  private TRADEServiceInfo bound(Slot slot) throws TRADEException {
     TRADEServiceInfo info = slot.info;
     Object generation = services.generation();
     if (info == null || slot.seen != generation && info.getDistance() < 0) {
@@ -90,11 +126,12 @@ final class ProxyHandler implements InvocationHandler {
       slot.info = info;
     }
     slot.seen = generation;
-    try {
-      return info.call(slot.model.callType, args);
-    } catch (TRADEServiceUnavailableException e) {
+    return info;
+  }
+
+  private static void unbindIfGone(Slot slot, TRADEException e) {
+    if (e instanceof TRADEServiceUnavailableException) {
       slot.info = null; // gone while we called: find it again next time
-      throw e;
     }
   }
 
