@@ -7,6 +7,7 @@ import dev.trade.TRADEServiceUnavailableException;
 import java.lang.reflect.InvocationHandler;
 import java.lang.reflect.Method;
 import java.util.HashMap;
+import java.util.IdentityHashMap;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionException;
@@ -33,6 +34,12 @@ final class ProxyHandler implements InvocationHandler {
 
   private final Class<?> type;
   private final Map<Method, Slot> slots;
+  /**
+   * The slots by the {@code Method} objects the proxy class passes, compared by identity: the
+   * proxy's {@code Method}s are copies of those {@link #slots} was made with, and
+   * {@code Method.equals} compares their parameter types one by one. Copy-on-write.
+   */
+  private volatile Map<Method, Slot> byIdentity = new IdentityHashMap<>();
   private final Proxies.Services services;
   private final TRADEServiceConstraints constraints;
   private final String constraintsText;
@@ -50,11 +57,28 @@ final class ProxyHandler implements InvocationHandler {
     this.closedError = closedError;
   }
 
+  /**
+   * Adds {@code method} to {@link #byIdentity}. The proxy class passes the same {@code Method}
+   * object for a method on every call, so this happens once per method; the bound only guards
+   * against callers of this handler that pass copies.
+   */
+  private synchronized void remember(Method method, Slot slot) {
+    if (byIdentity.size() < 2 * slots.size()) {
+      Map<Method, Slot> copy = new IdentityHashMap<>(byIdentity);
+      copy.put(method, slot);
+      byIdentity = copy;
+    }
+  }
+
   @Override
   public Object invoke(Object proxy, Method method, Object[] args) throws Throwable {
-    Slot slot = slots.get(method);
+    Slot slot = byIdentity.get(method);
     if (slot == null) {
-      return local(proxy, method, args);
+      slot = slots.get(method);
+      if (slot == null) {
+        return local(proxy, method, args);
+      }
+      remember(method, slot);
     }
     MethodModel model = slot.model;
     if (!model.async) {
@@ -125,7 +149,9 @@ final class ProxyHandler implements InvocationHandler {
       info = services.find(constraints, slot.model.name, slot.model.parameterTypes);
       slot.info = info;
     }
-    slot.seen = generation;
+    if (slot.seen != generation) { // a volatile write on every call would cost more than a read
+      slot.seen = generation;
+    }
     return info;
   }
 
