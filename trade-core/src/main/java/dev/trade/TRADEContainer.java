@@ -1314,10 +1314,10 @@ public final class TRADEContainer implements AutoCloseable {
    * {@code toString} are the proxy's own (identity).
    *
    * <p><b>Asynchronous methods.</b> A method returning {@code CompletableFuture<V>} (or
-   * {@code CompletionStage<V>}) returns at once; the call runs on one of this container's proxy
-   * threads (at most 16 at a time, the rest queue), and the future completes with the result or
-   * fails with what the method would have thrown. The call holds its thread until the reply
-   * arrives.
+   * {@code CompletionStage<V>}) finds its service on the caller's thread and sends the call as
+   * {@link TRADEServiceInfo#callAsync} does: it returns at once, and no thread waits while a remote
+   * reply is outstanding. The future completes with the result, or fails with what the method
+   * would have thrown (as below).
    *
    * <p><b>Failures.</b> A method that declares the exception the service threw (its own type, such
    * as {@code GripperJammedException}) throws that exception itself. Otherwise a method that

@@ -11,15 +11,16 @@ import java.util.List;
  * {@code remote} (latency and throughput against the peers), {@code lifecycle} (start to callable,
  * kill to left), {@code scale} (10/50/100 containers) and {@code machine} (facts about this host).
  * {@code src/run-benchmarks} runs them all; {@code -Dbench.quick=true} makes a short smoke run.
- * {@code churn} (containers coming and going, {@link Churn}) and {@code notify} (notifications and
- * non-blocking calls, {@link NotifyBench}) are run by hand.
+ * {@code churn} (containers coming and going, {@link Churn}), {@code notify} (notifications and
+ * non-blocking calls, {@link NotifyBench}) and {@code proxycpu} (a typed proxy against a direct
+ * call, {@link ProxyCpu}) are run by hand.
  */
 public final class BenchMain {
   private BenchMain() {}
 
   public static void main(String[] args) throws Throwable {
     if (args.length < 2) {
-      System.err.println("usage: BenchMain remote|lifecycle|scale|localcpu|machine|churn|notify <results-dir> [systems...]");
+      System.err.println("usage: BenchMain remote|lifecycle|scale|localcpu|proxycpu|machine|churn|notify <results-dir> [systems...]");
       System.exit(2);
     }
     Path out = Path.of(args[1]);
@@ -40,6 +41,7 @@ public final class BenchMain {
       case "scale" -> new Scale(logs, quick).run(json);
       case "machine" -> machine(json);
       case "localcpu" -> LocalCpu.run(json);
+      case "proxycpu" -> ProxyCpu.run(json);
       case "churn" -> new Churn().run(json);
       case "notify" -> new NotifyBench(logs, quick).run(json);
       default -> throw new IllegalArgumentException("unknown part " + args[0]);

@@ -19,6 +19,8 @@ import org.openjdk.jmh.annotations.TearDown;
 /**
  * What a typed proxy adds to a local call: {@code TRADEServiceInfo.call} against the same service
  * called through {@code TRADEContainer.proxy} (goal: within 50 ns of the direct {@code call}).
+ * These JMH methods measure wall time; {@link ProxyCpu} ({@code BenchMain proxycpu}) judges the goal
+ * by CPU time in interleaved pairs, which a busy machine disturbs far less.
  */
 @BenchmarkMode(Mode.AverageTime)
 @OutputTimeUnit(TimeUnit.NANOSECONDS)

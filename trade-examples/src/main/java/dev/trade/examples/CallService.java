@@ -5,8 +5,11 @@ import dev.trade.TRADEException;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
+import java.lang.reflect.Method;
+import java.lang.reflect.Type;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 
@@ -15,7 +18,7 @@ import java.util.concurrent.TimeUnit;
  *
  * <pre>
  * java -cp CLASSPATH dev.trade.examples.CallService [--config FILE] [--groups G1,G2] [--wait SECONDS]
- *     SERVICE [ARGUMENT...]
+ *     [--types CLASS,...] SERVICE [ARGUMENT...]
  * </pre>
  *
  * It waits (default 10 s) until a service named SERVICE, in all of the groups and taking as many
@@ -25,6 +28,11 @@ import java.util.concurrent.TimeUnit;
  * prints {@code openGripper(int) @ arm returned true}. Arguments are numbered from 0, as the
  * library's own messages number them. Exit status: 0 when the call returned (and for
  * {@code --help}), 1 when it failed or no service came, 2 for bad arguments or configuration.
+ *
+ * <p>A service info names its parameters' classes without their type arguments ({@code List}, not
+ * {@code List<Pose>}), so an object inside a list or map says what it is with {@code "@type"}, or
+ * {@code --types} names a class on the class path that declares the method, whose generic
+ * signature then says it.
  */
 public final class CallService {
   private final Object joined = new Object();
@@ -40,14 +48,20 @@ public final class CallService {
   }
 
   static final String USAGE = """
-      usage: CallService [--config FILE] [--groups G1,G2] [--wait SECONDS] SERVICE [ARGUMENT...]
+      usage: CallService [--config FILE] [--groups G1,G2] [--wait SECONDS] [--types C1,C2]
+                         SERVICE [ARGUMENT...]
         Calls the service SERVICE, in all of the groups and with as many parameters as arguments.
         --config FILE     the trade.properties of the calling container (default: built-in)
         --groups G1,G2    only services in all of these groups
         --wait SECONDS    how long to wait for the service to appear (default 10)
+        --types C1,C2     classes on the class path that declare the service's method: its
+                          generic signature (List<Pose>) says what lists and maps hold
         ARGUMENT          as typed for numbers, true/false, characters and strings;
                           JSON for records, arrays, lists and maps: '{"x":0.4,"y":0.1}' '[1,2]'
-      Classes of records the service takes must be on the class path (java -cp).""";
+      Classes of records the service takes must be on the class path (java -cp).
+      A service names its parameters' classes without type arguments (List, not List<Pose>):
+      without --types, an object in a list or map names its class with "@type":
+        '[{"@type":"com.acme.Pose","x":0.4,"y":0.1}]'   ("@type":"java.util.Map" for a map)""";
 
   public static void main(String[] args) throws InterruptedException {
     if (args.length > 0 && (args[0].equals("--help") || args[0].equals("-h"))) {
@@ -57,6 +71,7 @@ public final class CallService {
     Path config = null;
     List<String> groups = new ArrayList<>();
     long waitSeconds = 10;
+    List<Class<?>> types = new ArrayList<>();
     int i = 0;
     try {
       for (; i < args.length && args[i].startsWith("--"); i += 2) {
@@ -67,6 +82,7 @@ public final class CallService {
           case "--config" -> config = Path.of(args[i + 1]);
           case "--groups" -> groups = List.of(args[i + 1].split(","));
           case "--wait" -> waitSeconds = Long.parseLong(args[i + 1]);
+          case "--types" -> types = classes(args[i + 1]);
           default -> throw new IllegalArgumentException("unknown option " + args[i]);
         }
       }
@@ -99,7 +115,7 @@ public final class CallService {
             + " parameters came within " + waitSeconds + " s");
         status = 1;
       } else {
-        Object result = service.call(Object.class, convert(service, arguments));
+        Object result = service.call(Object.class, convert(service, arguments, types));
         System.out.println(service.serviceString + " @ " + service.getContainerName()
             + (service.serviceReturnTypeName.equals("void") ? " returned" : " returned " + result));
         status = 0;
@@ -138,11 +154,22 @@ public final class CallService {
   }
 
   /**
-   * The arguments as the service's parameter types.
+   * The arguments as the service's parameter types, as far as the service info says them.
    *
    * @throws IllegalArgumentException naming the argument that does not fit
    */
   static Object[] convert(TRADEServiceInfo service, List<String> arguments) {
+    return convert(service, arguments, List.of());
+  }
+
+  /**
+   * The arguments as the service's parameter types, generic where one of {@code types} declares
+   * the service's method.
+   *
+   * @throws IllegalArgumentException naming the argument that does not fit
+   */
+  static Object[] convert(TRADEServiceInfo service, List<String> arguments, List<Class<?>> types) {
+    Type[] generic = genericParameterTypes(service, types);
     Object[] values = new Object[arguments.size()];
     for (int i = 0; i < values.length; i++) {
       String type = service.serviceParameterTypeNames[i];
@@ -158,15 +185,45 @@ public final class CallService {
           case "boolean", "java.lang.Boolean" -> bool(text);
           case "char", "java.lang.Character" -> character(text);
           case "java.lang.String", "java.lang.Object", "java.lang.CharSequence" -> text;
-          default -> Json.to(parameterType(service, i), Json.parse(text));
+          default -> Json.to(generic != null ? generic[i] : parameterType(service, i), Json.parse(text));
         };
       } catch (IllegalArgumentException e) {
         throw new IllegalArgumentException("Argument " + i + " ('" + service.serviceParameterNames[i]
-            + "', expected " + type + ") '" + text + "' does not fit: " + e.getMessage()
-            + "\n    for service " + service.serviceString);
+            + "', expected " + (generic != null ? generic[i].getTypeName() : type) + ") '" + text
+            + "' does not fit: " + e.getMessage() + "\n    for service " + service.serviceString);
       }
     }
     return values;
+  }
+
+  /**
+   * The generic parameter types of the public method of one of {@code types} that has the
+   * service's name and parameter classes, or null when none has.
+   */
+  private static Type[] genericParameterTypes(TRADEServiceInfo service, List<Class<?>> types) {
+    for (Class<?> c : types) {
+      for (Method m : c.getMethods()) {
+        if (m.getName().equals(service.serviceName) && Arrays.equals(service.serviceParameterTypeNames,
+            Arrays.stream(m.getParameterTypes()).map(Class::getTypeName).toArray())) {
+          return m.getGenericParameterTypes();
+        }
+      }
+    }
+    return null;
+  }
+
+  /** The classes {@code --types} names. */
+  private static List<Class<?>> classes(String names) {
+    List<Class<?>> classes = new ArrayList<>();
+    for (String name : names.split(",")) {
+      try {
+        classes.add(Class.forName(name.trim(), false, CallService.class.getClassLoader()));
+      } catch (ClassNotFoundException | LinkageError e) {
+        throw new IllegalArgumentException("--types: class " + name.trim()
+            + " is not on the class path; add it with java -cp");
+      }
+    }
+    return classes;
   }
 
   private static Class<?> parameterType(TRADEServiceInfo service, int i) {

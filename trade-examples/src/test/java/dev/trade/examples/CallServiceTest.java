@@ -14,6 +14,7 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
@@ -22,10 +23,22 @@ import org.junit.jupiter.api.Test;
 class CallServiceTest {
   public record Pose(double x, double y, String frame) {}
 
+  public record Route(List<Pose> poses, Set<String> tags) {}
+
   public static class Robot {
     @TRADEService
     public String moveTo(Pose pose, int speed) {
       return pose + " at " + speed;
+    }
+
+    @TRADEService
+    public String visit(List<Pose> poses, Map<String, Pose> named) {
+      return poses.get(0).frame() + " " + named.get("home").frame();
+    }
+
+    @TRADEService
+    public String follow(Route route) {
+      return route.poses().get(1).frame() + " " + route.tags();
     }
 
     @TRADEService
@@ -58,6 +71,54 @@ class CallServiceTest {
     assertArrayEquals(new int[] {1, 2, 3}, (int[]) args[0]);
     assertEquals(List.of(4, 5), args[1]);
     assertEquals(6, sum.call(int.class, args));
+  }
+
+  @Test
+  void objectsInListsAndMapsNameTheirClassWhereTheSignatureCannot() throws TRADEException {
+    TRADEServiceInfo visit = service("visit");
+    String pose = "\"@type\": \"" + Pose.class.getName() + "\", \"x\": 1, \"y\": 2";
+    Object[] args = CallService.convert(visit, List.of("[{" + pose + ", \"frame\": \"base\"}]",
+        "{\"home\": {" + pose + ", \"frame\": \"dock\"}}"));
+    assertEquals(List.of(new Pose(1, 2, "base")), args[0]);
+    assertEquals("base dock", visit.call(String.class, args));
+  }
+
+  @Test
+  void aMissingTypeIsAnErrorNamingTheArgumentAndTheFix() throws TRADEException {
+    TRADEServiceInfo visit = service("visit");
+    assertEquals("Argument 0 ('poses', expected java.util.List) '[{\"x\": 1}]' does not fit: at [0]:"
+        + " a JSON object, but the signature does not say what it is (service infos carry raw"
+        + " parameter types, such as java.util.List): name its class, {\"@type\": \"com.acme.Pose\","
+        + " ...} ({\"@type\": \"java.util.Map\", ...} for a map), or pass --types with a class on the"
+        + " class path that declares the method\n    for service visit(java.util.List,java.util.Map)",
+        assertThrows(IllegalArgumentException.class,
+            () -> CallService.convert(visit, List.of("[{\"x\": 1}]", "{}"))).getMessage());
+    assertTrue(assertThrows(IllegalArgumentException.class, () -> CallService.convert(visit,
+        List.of("[{\"@type\": \"com.acme.Missing\"}]", "{}"))).getMessage().contains(
+        "at [0]: \"@type\" names com.acme.Missing, which is not on the class path; add it with"
+        + " java -cp"));
+    assertTrue(assertThrows(IllegalArgumentException.class, () -> CallService.convert(visit,
+        List.of("[]", "{\"home\": {\"@type\": \"" + Route.class.getName() + "\"}}"))).getMessage()
+        .contains("at .home: no \"poses\" for Route"));
+    TRADEServiceInfo move = c.getAvailableService(new TRADEServiceConstraints().name("moveTo"));
+    assertTrue(assertThrows(IllegalArgumentException.class, () -> CallService.convert(move,
+        List.of("{\"@type\": \"" + Route.class.getName() + "\"}", "1"))).getMessage().contains(
+        "\"@type\" names " + Route.class.getName() + ", which is not a " + Pose.class.getTypeName()));
+  }
+
+  @Test
+  void aGenericSignatureOnTheClassPathSaysWhatListsAndMapsHold() throws TRADEException {
+    TRADEServiceInfo visit = service("visit");
+    Object[] args = CallService.convert(visit, List.of("[{\"x\": 1, \"y\": 2, \"frame\": \"base\"}]",
+        "{\"home\": {\"x\": 0, \"y\": 0, \"frame\": \"dock\"}}"), List.of(String.class, Robot.class));
+    assertEquals(List.of(new Pose(1, 2, "base")), args[0]);
+    assertEquals("base dock", visit.call(String.class, args));
+
+    // A record's components are declared with their type arguments.
+    TRADEServiceInfo follow = c.getAvailableService(new TRADEServiceConstraints().name("follow"));
+    args = CallService.convert(follow, List.of("{\"poses\": [{\"x\": 1, \"y\": 2, \"frame\": \"a\"},"
+        + " {\"x\": 3, \"y\": 4, \"frame\": \"b\"}], \"tags\": [\"t\", \"t\"]}"));
+    assertEquals("b [t]", follow.call(String.class, args));
   }
 
   @Test

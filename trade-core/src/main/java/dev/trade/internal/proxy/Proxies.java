@@ -7,25 +7,11 @@ import java.lang.reflect.Method;
 import java.lang.reflect.Proxy;
 import java.util.Map;
 import java.util.Objects;
-import java.util.concurrent.Executor;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.LinkedBlockingQueue;
-import java.util.concurrent.ThreadPoolExecutor;
-import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicInteger;
 
 /**
- * Makes the typed proxies of one container, and owns the threads their asynchronous methods run
- * on. Safe for concurrent use.
+ * Makes the typed proxies of one container. Safe for concurrent use.
  */
 public final class Proxies implements AutoCloseable {
-  /**
-   * The most asynchronous proxy calls in progress at once; later ones queue. Each holds a thread
-   * for the whole call, because calls block; a bound keeps a burst of them from growing threads
-   * without limit.
-   */
-  static final int ASYNC_THREADS = 16;
-
   // Parsed once per interface for the life of the class (Retrofit's per-method cache); a
   // ClassValue does not keep the interface's class loader alive.
   private static final ClassValue<Map<Method, MethodModel>> MODELS = new ClassValue<>() {
@@ -53,10 +39,7 @@ public final class Proxies implements AutoCloseable {
 
   private final Services services;
   private final String containerName;
-  private final Object lock = new Object();
-  // Guarded by lock; made on the first asynchronous call.
-  private ExecutorService async;
-  private boolean closed;
+  private volatile boolean closed;
 
   public Proxies(Services services, String containerName) {
     this.services = Objects.requireNonNull(services, "services == null");
@@ -74,38 +57,18 @@ public final class Proxies implements AutoCloseable {
   public <T> T create(Class<T> type, TRADEServiceConstraints constraints) {
     Objects.requireNonNull(type, "type == null");
     Map<Method, MethodModel> models = MODELS.get(type);
-    ProxyHandler handler = new ProxyHandler(type, models, services, constraints, this::executor);
+    ProxyHandler handler = new ProxyHandler(type, models, services, constraints, this::closedError);
     return type.cast(Proxy.newProxyInstance(type.getClassLoader(), new Class<?>[] {type}, handler));
   }
 
-  private Executor executor() {
-    synchronized (lock) {
-      if (closed) {
-        throw new IllegalStateException("container " + containerName + " is closed");
-      }
-      if (async == null) {
-        AtomicInteger n = new AtomicInteger();
-        ThreadPoolExecutor pool = new ThreadPoolExecutor(ASYNC_THREADS, ASYNC_THREADS, 30,
-            TimeUnit.SECONDS, new LinkedBlockingQueue<>(), r -> {
-              Thread t = new Thread(r, "trade-proxy-" + containerName + "-" + n.incrementAndGet());
-              t.setDaemon(true);
-              return t;
-            });
-        pool.allowCoreThreadTimeOut(true);
-        async = pool;
-      }
-      return async;
-    }
+  /** Why an asynchronous call cannot be sent: null while the container is open. */
+  private IllegalStateException closedError() {
+    return closed ? new IllegalStateException("container " + containerName + " is closed") : null;
   }
 
-  /** Stops the asynchronous calls' threads; calls already queued still run. Idempotent. */
+  /** Makes later asynchronous calls fail at once; calls already sent still complete. Idempotent. */
   @Override
   public void close() {
-    synchronized (lock) {
-      closed = true;
-      if (async != null) {
-        async.shutdown();
-      }
-    }
+    closed = true;
   }
 }

@@ -7,10 +7,10 @@ import dev.trade.TRADEServiceUnavailableException;
 import java.lang.reflect.InvocationHandler;
 import java.lang.reflect.Method;
 import java.util.HashMap;
+import java.util.IdentityHashMap;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.Executor;
-import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.CompletionException;
 import java.util.function.Supplier;
 
 /**
@@ -34,13 +34,19 @@ final class ProxyHandler implements InvocationHandler {
 
   private final Class<?> type;
   private final Map<Method, Slot> slots;
+  /**
+   * The slots by the {@code Method} objects the proxy class passes, compared by identity: the
+   * proxy's {@code Method}s are copies of those {@link #slots} was made with, and
+   * {@code Method.equals} compares their parameter types one by one. Copy-on-write.
+   */
+  private volatile Map<Method, Slot> byIdentity = new IdentityHashMap<>();
   private final Proxies.Services services;
   private final TRADEServiceConstraints constraints;
   private final String constraintsText;
-  private final Supplier<Executor> executor;
+  private final Supplier<IllegalStateException> closedError;
 
   ProxyHandler(Class<?> type, Map<Method, MethodModel> models, Proxies.Services services,
-      TRADEServiceConstraints constraints, Supplier<Executor> executor) {
+      TRADEServiceConstraints constraints, Supplier<IllegalStateException> closedError) {
     this.type = type;
     Map<Method, Slot> s = new HashMap<>();
     models.forEach((m, model) -> s.put(m, new Slot(model)));
@@ -48,14 +54,31 @@ final class ProxyHandler implements InvocationHandler {
     this.services = services;
     this.constraints = constraints;
     this.constraintsText = constraints == null ? "" : " " + constraints;
-    this.executor = executor;
+    this.closedError = closedError;
+  }
+
+  /**
+   * Adds {@code method} to {@link #byIdentity}. The proxy class passes the same {@code Method}
+   * object for a method on every call, so this happens once per method; the bound only guards
+   * against callers of this handler that pass copies.
+   */
+  private synchronized void remember(Method method, Slot slot) {
+    if (byIdentity.size() < 2 * slots.size()) {
+      Map<Method, Slot> copy = new IdentityHashMap<>(byIdentity);
+      copy.put(method, slot);
+      byIdentity = copy;
+    }
   }
 
   @Override
   public Object invoke(Object proxy, Method method, Object[] args) throws Throwable {
-    Slot slot = slots.get(method);
+    Slot slot = byIdentity.get(method);
     if (slot == null) {
-      return local(proxy, method, args);
+      slot = slots.get(method);
+      if (slot == null) {
+        return local(proxy, method, args);
+      }
+      remember(method, slot);
     }
     MethodModel model = slot.model;
     if (!model.async) {
@@ -65,36 +88,76 @@ final class ProxyHandler implements InvocationHandler {
         throw model.failure(e);
       }
     }
-    CompletableFuture<Object> result = new CompletableFuture<>();
-    try {
-      executor.get().execute(() -> {
-        try {
-          result.complete(call(slot, args));
-        } catch (TRADEException e) {
-          result.completeExceptionally(model.failure(e));
-        } catch (RuntimeException | Error e) {
-          result.completeExceptionally(e);
-        }
-      });
-    } catch (RejectedExecutionException e) {
-      result.completeExceptionally(new IllegalStateException("the container is closed", e));
+    IllegalStateException closed = closedError.get();
+    if (closed != null) {
+      return CompletableFuture.failedFuture(closed);
     }
+    return callAsync(slot, args);
+  }
+
+  /**
+   * The asynchronous call: found on the caller's thread (a lookup in the container's own table),
+   * then sent without a thread waiting for the reply.
+   */
+  private CompletableFuture<Object> callAsync(Slot slot, Object[] args) {
+    MethodModel model = slot.model;
+    TRADEServiceInfo info;
+    try {
+      info = bound(slot);
+    } catch (TRADEException e) {
+      return CompletableFuture.failedFuture(model.failure(e));
+    }
+    CompletableFuture<?> call;
+    try {
+      call = info.callAsync(model.callType, args);
+    } catch (RuntimeException e) { // the container closed while we looked
+      return CompletableFuture.failedFuture(e);
+    }
+    CompletableFuture<Object> result = new CompletableFuture<>();
+    call.whenComplete((value, failure) -> {
+      if (failure == null) {
+        result.complete(value);
+        return;
+      }
+      Throwable cause = failure instanceof CompletionException && failure.getCause() != null
+          ? failure.getCause() : failure;
+      if (cause instanceof TRADEException) {
+        unbindIfGone(slot, (TRADEException) cause);
+        result.completeExceptionally(model.failure((TRADEException) cause));
+      } else {
+        result.completeExceptionally(cause);
+      }
+    });
     return result;
   }
 
   private Object call(Slot slot, Object[] args) throws TRADEException {
+    TRADEServiceInfo info = bound(slot);
+    try {
+      return info.call(slot.model.callType, args);
+    } catch (TRADEException e) {
+      unbindIfGone(slot, e);
+      throw e;
+    }
+  }
+
+  /** The service {@code slot}'s method calls now: the one found before while it is known. */
+  private TRADEServiceInfo bound(Slot slot) throws TRADEException {
     TRADEServiceInfo info = slot.info;
     Object generation = services.generation();
     if (info == null || slot.seen != generation && info.getDistance() < 0) {
       info = services.find(constraints, slot.model.name, slot.model.parameterTypes);
       slot.info = info;
     }
-    slot.seen = generation;
-    try {
-      return info.call(slot.model.callType, args);
-    } catch (TRADEServiceUnavailableException e) {
+    if (slot.seen != generation) { // a volatile write on every call would cost more than a read
+      slot.seen = generation;
+    }
+    return info;
+  }
+
+  private static void unbindIfGone(Slot slot, TRADEException e) {
+    if (e instanceof TRADEServiceUnavailableException) {
       slot.info = null; // gone while we called: find it again next time
-      throw e;
     }
   }
 
