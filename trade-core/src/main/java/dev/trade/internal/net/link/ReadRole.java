@@ -187,6 +187,19 @@ final class ReadRole {
     }
   }
 
+  /**
+   * Ends a {@link #borrow} whose caller will not call again before the peer sends something: it
+   * called back the peer whose call it serves. The peer's next frame (its next call, which only
+   * this caller's reply lets it make) would come while reading lingers lent to a caller that will
+   * not read, and wait for the linger. So the linger ends here, and the lender reads again at once
+   * (unless other callers still borrow).
+   */
+  void giveBackCallingBack() {
+    lastActive = clock.getAsLong() - maxLinger; // at least the linger ago: lending no longer pays
+    borrowers.decrementAndGet();
+    wakeLender();
+  }
+
   /** A caller takes reading if nobody reads; then it must {@link #release} it or end it. */
   boolean tryTake() {
     if (state.get() == FREE && state.compareAndSet(FREE, LENT)) {
