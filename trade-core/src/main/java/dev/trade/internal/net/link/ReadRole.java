@@ -21,7 +21,10 @@ import java.util.concurrent.locks.LockSupport;
  * {@link #LINGER_NANOS}; a caller calling more seldom than that does not borrow
  * ({@link #lendingPays}). So a frame that arrives while no caller reads (a ping, the peer's own
  * call) waits at most about that long, only on a link a lone caller uses, and up to 2 ms only
- * while a caller calls at least every 2 ms, when lending pays.
+ * while a caller calls at least every 2 ms, when lending pays. A caller that calls back the peer
+ * whose call it serves over this link (a hook whose wrapper is in the caller's container, any
+ * re-entrant call) ends the linger as it gives reading back ({@link #giveBackCallingBack}): the
+ * peer's next call, which only its reply lets the peer make, would always wait for it.
  *
  * <p>States: {@code READING} (a reading thread has it), {@code FREE} (lent, nobody reads now),
  * {@code LENT} (a caller reads), {@code ENDED} (the link's reading ended). Only the holder leaves
