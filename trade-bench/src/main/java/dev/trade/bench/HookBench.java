@@ -5,6 +5,7 @@ import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.LockSupport;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
 import org.openjdk.jmh.annotations.Level;
@@ -21,7 +22,11 @@ import org.openjdk.jmh.annotations.TearDown;
  * containers linked over loopback (caller and wrapper in one, the service in the other), without a
  * hook, with a synchronous after hook (its wrapper is in the caller's container: one more round
  * trip, over the link the call came on) and with an asynchronous one; and a synchronous after hook
- * whose wrapper is in a third container, linked to the service's. Sample time, so that JMH reports
+ * whose wrapper is in a third container, linked to the service's; and, for comparison, a service
+ * that calls back a service of its caller's container (what a hook whose wrapper is there does,
+ * without hooks). The paced ones call once a millisecond, like a control loop, so that an
+ * asynchronous hook's wrapper call is over before the next call (back to back, it competes with
+ * it for the cores). Sample time, so that JMH reports
  * p50 and p99. Needs a loopback interface (run it inside {@code unshare --net} with {@code lo} up).
  */
 @BenchmarkMode(Mode.SampleTime)
@@ -33,6 +38,28 @@ public class HookBench {
     @TRADEService
     public boolean small(int x) {
       return (x & 1) == 0;
+    }
+  }
+
+  /**
+   * The pause before each paced call: a setup of each invocation, which JMH leaves out of the
+   * time it measures.
+   */
+  @State(Scope.Thread)
+  public static class Pace {
+    @Setup(Level.Invocation)
+    public void pause() {
+      LockSupport.parkNanos(TimeUnit.MILLISECONDS.toNanos(1));
+    }
+  }
+
+  /** A service that calls back a service of its caller's container before it answers. */
+  public static class CallsBack {
+    volatile TRADEServiceInfo back;
+
+    @TRADEService
+    public boolean callingBack(int x) throws Exception {
+      return back.call(boolean.class, x);
     }
   }
 
@@ -59,6 +86,7 @@ public class HookBench {
   private TRADEServiceInfo remoteSync;
   private TRADEServiceInfo remoteAsync;
   private TRADEServiceInfo remoteThird;
+  private TRADEServiceInfo remoteCallingBack;
   private int x;
 
   @Setup(Level.Trial)
@@ -88,6 +116,13 @@ public class HookBench {
     remoteSync = remote("sync");
     remoteAsync = remote("async");
     remoteThird = remote("third");
+    caller.registerAllServices(new Arm(), "back");
+    CallsBack callsBack = new CallsBack();
+    provider.registerAllServices(callsBack, "callsBack");
+    callsBack.back = provider.waitForService(new TRADEServiceConstraints().name("small")
+        .inGroups("back"), java.time.Duration.ofSeconds(30));
+    remoteCallingBack = caller.waitForService(new TRADEServiceConstraints().name("callingBack"),
+        java.time.Duration.ofSeconds(30));
     TRADEServiceInfo noted = small(caller, "noted");
     caller.afterService(noted, remoteSync);
     caller.afterService(noted, remoteAsync, true);
@@ -146,6 +181,21 @@ public class HookBench {
   @Benchmark
   public boolean remoteSyncAfterHookInAThirdContainer() throws Exception {
     return remoteThird.call(boolean.class, ++x);
+  }
+
+  @Benchmark
+  public boolean remoteNoHookPaced(Pace pace) throws Exception {
+    return remotePlain.call(boolean.class, ++x);
+  }
+
+  @Benchmark
+  public boolean remoteAsyncAfterHookPaced(Pace pace) throws Exception {
+    return remoteAsync.call(boolean.class, ++x);
+  }
+
+  @Benchmark
+  public boolean remoteCallBack() throws Exception {
+    return remoteCallingBack.call(boolean.class, ++x);
   }
 
   @Benchmark

@@ -17,6 +17,8 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionException;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
@@ -158,6 +160,47 @@ class HooksTest {
       assertEquals(2L, h.get("calls"), h.toString());
       assertEquals(2L, h.get("failures"), h.toString());
     }
+  }
+
+  /**
+   * A local wrapper that hangs delays its call by the hook timeout at most: it runs on a thread
+   * of its own, which it keeps until it ends, and fails its hook. The call returns while both
+   * wrappers still hang; released, they end, and nothing is left waiting.
+   */
+  @Test
+  void aHangingLocalHookDelaysTheCallByTheHookTimeoutAtMost() throws Exception {
+    TRADEContainer c = container("hanging", "HOOKTIMEOUT", "200");
+    CountDownLatch release = new CountDownLatch(1);
+    CountDownLatch ended = new CountDownLatch(2);
+    Object hangs = new Object() {
+      @TRADEService
+      public void hang(Object[] call) throws InterruptedException {
+        release.await();
+        ended.countDown();
+      }
+    };
+    c.registerAllServices(hangs, "hooks");
+    c.registerAllServices(new Robot(new ArrayList<>()), "robot");
+    TRADEServiceInfo open = service(c, "openGripper");
+    c.beforeService(service(c, "hang"), open);
+    c.afterService(service(c, "hang"), open);
+    try {
+      CompletableFuture<Boolean> call = CompletableFuture.supplyAsync(() -> {
+        try {
+          return open.call(boolean.class, 3, "anyway");
+        } catch (TRADEException e) {
+          throw new CompletionException(e);
+        }
+      });
+      assertEquals(true, call.get(WAIT.toMillis(), TimeUnit.MILLISECONDS), "the call's result");
+      assertEquals(2, ended.getCount(), "the call returned after its wrappers");
+      assertEquals(List.of(1L, 1L), c.getHooks().stream().map(h -> h.get("failures")).toList());
+    } finally {
+      release.countDown();
+    }
+    assertTrue(ended.await(WAIT.toMillis(), TimeUnit.MILLISECONDS), "the wrappers ended");
+    Await.until(WAIT, () -> c.getHooks().stream().allMatch(h -> h.get("calls").equals(1L)),
+        "the wrappers' calls counted as they ended");
   }
 
   @Test

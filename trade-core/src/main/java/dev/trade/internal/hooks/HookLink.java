@@ -12,6 +12,8 @@ import java.lang.System.Logger.Level;
 import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.RejectedExecutionException;
@@ -30,7 +32,8 @@ import java.util.concurrent.atomic.AtomicInteger;
  * caller exactly the target's result or failure, whatever a hook does. A hook that fails, times
  * out or whose wrapper is gone is counted and logged (the first failure of each hook at WARNING,
  * later ones at DEBUG) and never fails the call. Synchronous hooks wait at most the hook timeout
- * and never past the call's own deadline; asynchronous ones run on this link's pool (two daemon
+ * and never past the call's own deadline: a remote wrapper is called with that deadline, a local
+ * one runs on a thread of {@link LocalWrappers} while the call waits for it; asynchronous ones run on this link's pool (two daemon
  * threads, made at first use, a queue of {@value #QUEUE}; a hook call that does not fit is
  * dropped and counted as a failure). Safe for concurrent use.
  */
@@ -43,6 +46,7 @@ final class HookLink implements CallLink {
   private final long timeoutNanos;
   private final String name;
   private volatile CallObserver observer;
+  private final LocalWrappers local;
   private ExecutorService pool; // Guarded by this.
   private boolean closed; // Guarded by this.
 
@@ -55,6 +59,7 @@ final class HookLink implements CallLink {
     this.caller = caller;
     this.timeoutNanos = timeoutNanos;
     this.name = name;
+    this.local = new LocalWrappers(name);
   }
 
   /** Starts or (null) stops observing every call. */
@@ -180,7 +185,20 @@ final class HookLink implements CallLink {
       failed(h, call, "the call's deadline passed");
       return;
     }
-    run(h, call.caller().container().toString(), inside, args, timeout);
+    String from = call.caller().container().toString();
+    if (!isLocal(h)) {
+      run(h, from, inside, args, timeout); // the remote call gives up at its deadline
+      return;
+    }
+    try {
+      if (!local.run(() -> run(h, from, inside, args, timeout), timeout)) {
+        failed(h, from, "its wrapper did not end within " + TimeUnit.NANOSECONDS.toMillis(timeout)
+            + " ms (HOOKTIMEOUT, or the call's deadline); it goes on, on a thread of its own");
+      }
+    } catch (RejectedExecutionException e) {
+      failed(h, from, "not called: " + LocalWrappers.MAX_THREADS + " local wrappers run or hang"
+          + " already, or the container is closing");
+    }
   }
 
   private void callAsync(Hook h, Invocation call, String path, Object[] args) {
@@ -201,7 +219,14 @@ final class HookLink implements CallLink {
   private void run(Hook h, String from, CallContext inside, Object[] args, long timeout) {
     CallContext outer = HookPath.enter(inside);
     try {
-      caller.call(h.wrapper, Object.class, args, timeout);
+      if (h.kind == Kind.AFTER_ASYNC && !isLocal(h)) {
+        // As a call whose reply nobody waits for on a link: its link goes on being read by its
+        // own thread, not lent to this one, and the next call of the target's callers, coming
+        // over that link, need not wait for the lending to end (docs/benchmarks.md, "Hooks").
+        awaited(caller.callAsync(h.wrapper, Object.class, args, timeout));
+      } else {
+        caller.call(h.wrapper, Object.class, args, timeout);
+      }
       h.calls.increment();
     } catch (TRADEServiceUnavailableException e) {
       // The wrapper left, or its container cannot be reached: when it left, the hook is removed
@@ -214,6 +239,22 @@ final class HookLink implements CallLink {
       failed(h, from, e.getClass().getSimpleName() + ": " + e.getMessage());
     } finally {
       HookPath.exit(outer);
+    }
+  }
+
+  private boolean isLocal(Hook h) {
+    return h.wrapper.containerId().equals(caller.containerId());
+  }
+
+  /** The result of an asynchronous call, or the {@code TRADEException} it failed with. */
+  private static void awaited(CompletableFuture<Object> call) throws TRADEException {
+    try {
+      call.join();
+    } catch (CompletionException e) {
+      if (e.getCause() instanceof TRADEException t) {
+        throw t;
+      }
+      throw e;
     }
   }
 
@@ -263,9 +304,13 @@ final class HookLink implements CallLink {
     return pool;
   }
 
-  /** Stops the asynchronous hooks' pool; hook calls queued are dropped. */
+  /**
+   * Stops the asynchronous hooks' pool (hook calls queued are dropped) and the local wrappers'
+   * (those that hang keep their threads).
+   */
   synchronized void close() {
     closed = true;
+    local.close();
     if (pool != null) {
       pool.shutdownNow();
     }

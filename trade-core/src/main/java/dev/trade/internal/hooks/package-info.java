@@ -13,7 +13,9 @@
  * hooks already running on a call's path, on the thread and in the call context, so that no hook
  * runs inside its own call.
  *
- * <p>Threads: synchronous hooks run on the calling thread; asynchronous after hooks on the link's
+ * <p>Threads: synchronous hooks run on the calling thread, but for local wrappers, which run on
+ * {@link dev.trade.internal.hooks.LocalWrappers}' threads while the call waits for them up to the
+ * hook timeout; asynchronous after hooks on the link's
  * pool (two threads, made at first use); set hooks reach services that join on the client's one
  * thread. Words: a hook <em>fails</em> when its wrapper throws, times out or cannot be called; a
  * failure is counted and logged and never reaches the call.

@@ -144,6 +144,15 @@ public final class Link {
     return served.serveHere(call);
   }
 
+  /**
+   * Whether the current thread serves a call that came over this link: a call it makes over the
+   * link then calls back the peer that waits for it (see {@link ReplyWait}).
+   */
+  boolean servesCallOnThisThread() {
+    ServedCalls s = served;
+    return s != null && s.servesOne();
+  }
+
   /** How many of this link's calls are served by threads that no longer read it. */
   public int servedElsewhere() {
     ServedCalls s = served;

@@ -21,7 +21,10 @@ import java.util.concurrent.locks.LockSupport;
  * {@link #LINGER_NANOS}; a caller calling more seldom than that does not borrow
  * ({@link #lendingPays}). So a frame that arrives while no caller reads (a ping, the peer's own
  * call) waits at most about that long, only on a link a lone caller uses, and up to 2 ms only
- * while a caller calls at least every 2 ms, when lending pays.
+ * while a caller calls at least every 2 ms, when lending pays. A caller that calls back the peer
+ * whose call it serves over this link (a hook whose wrapper is in the caller's container, any
+ * re-entrant call) ends the linger as it gives reading back ({@link #giveBackCallingBack}): the
+ * peer's next call, which only its reply lets the peer make, would always wait for it.
  *
  * <p>States: {@code READING} (a reading thread has it), {@code FREE} (lent, nobody reads now),
  * {@code LENT} (a caller reads), {@code ENDED} (the link's reading ended). Only the holder leaves
@@ -185,6 +188,19 @@ final class ReadRole {
       wanted = true;
       wakeLender();
     }
+  }
+
+  /**
+   * Ends a {@link #borrow} whose caller will not call again before the peer sends something: it
+   * called back the peer whose call it serves. The peer's next frame (its next call, which only
+   * this caller's reply lets it make) would come while reading lingers lent to a caller that will
+   * not read, and wait for the linger. So the linger ends here, and the lender reads again at once
+   * (unless other callers still borrow).
+   */
+  void giveBackCallingBack() {
+    lastActive = clock.getAsLong() - maxLinger; // at least the linger ago: lending no longer pays
+    borrowers.decrementAndGet();
+    wakeLender();
   }
 
   /** A caller takes reading if nobody reads; then it must {@link #release} it or end it. */

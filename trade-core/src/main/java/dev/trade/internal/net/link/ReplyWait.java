@@ -99,7 +99,11 @@ public final class ReplyWait {
       roundTrip += (Math.min(took, 16 * MAX_SPIN_NANOS) - roundTrip) >> 3;
       return result;
     } finally {
-      if (borrowed) {
+      if (borrowed && link.servesCallOnThisThread()) {
+        // A call back to the peer whose call this thread serves: the peer's next call comes only
+        // after this thread's reply, and must not find reading lent to nobody.
+        link.role.giveBackCallingBack();
+      } else if (borrowed) {
         // Once it has its reply (so a control loop's next call finds reading lent, see ReadRole);
         // if others wait, the link's thread reads again at once: nobody may read for them now.
         link.role.giveBack(waiting.get() > 1);

@@ -14,6 +14,11 @@ import java.util.concurrent.atomic.AtomicLong;
 public final class ServedCalls {
   /** What the current thread serves on a link's reading thread, if anything. */
   private static final ThreadLocal<ServedCalls> SERVING = new ThreadLocal<>();
+  /**
+   * The link whose call the current thread serves, also after reading moved on
+   * ({@link #servesOne}).
+   */
+  private static final ThreadLocal<ServedCalls> CALL_OF = new ThreadLocal<>();
 
   private final ReadWatch watch;
   private final LinkInput input;
@@ -52,16 +57,27 @@ public final class ServedCalls {
     long stamp = work.incrementAndGet();
     watch.serving();
     SERVING.set(this);
+    ServedCalls outer = CALL_OF.get(); // a caller reading its reply serves what it reads
+    CALL_OF.set(this);
     try {
       call.run();
     } finally {
       SERVING.set(null);
+      CALL_OF.set(outer);
     }
     if (work.compareAndSet(stamp, stamp + 1)) {
       return true;
     }
     servedElsewhere.decrementAndGet(); // reading moved on while this call ran: its thread is free
     return false;
+  }
+
+  /**
+   * Whether the current thread serves a call that came over this link, as its reading thread or,
+   * reading having moved on, as the thread left serving it.
+   */
+  boolean servesOne() {
+    return CALL_OF.get() == this;
   }
 
   /** How many calls of this link are served now by threads that no longer read it. */

@@ -259,6 +259,60 @@ class LentReadingTest {
   }
 
   /**
+   * A call served on the link's thread that calls back the peer whose call it serves (a hook whose
+   * wrapper is in the caller's container; any re-entrant call): it reads the call back's reply
+   * itself, and then reading goes back to the link's thread at once. The peer's next frame (its
+   * next call) comes only after the served call's reply: left lent for the linger, reading would
+   * lend to nobody, and that frame would wait for the linger to end (HookBench measured about a
+   * millisecond a call). The clock stands still here, so the linger never ends by itself: only the
+   * call back's end can give reading back.
+   */
+  @Test
+  void aServedCallThatCallsThePeerBackLeavesReadingToTheLinksThreadAtOnce() throws Exception {
+    ReadRole stillClock = new ReadRole(ReadRole.MIN_LINGER_NANOS, ReadRole.LINGER_NANOS, () -> 0L);
+    Link link = links.link(UUID.randomUUID(), "lentpeer", far, stillClock);
+    watched.add(link);
+    ReplyWait wait = new ReplyWait(WAIT.toNanos());
+    CompletableFuture<byte[]> callBack = new CompletableFuture<>();
+    CompletableFuture<Boolean> served = new CompletableFuture<>();
+    BlockingQueue<Integer> handedOut = new LinkedBlockingQueue<>();
+    link.start(new LinkHandler() {
+      @Override
+      public boolean frame(Link l, int type, byte[] payload) {
+        handedOut.add(type);
+        if (type == Wire.REPLY) {
+          callBack.complete(payload);
+        }
+        return type != Wire.CALL || l.serveHere(() -> {
+          try { // as RemoteCalls.call calls out
+            ServedCalls.releaseReading();
+            l.role.touch(); // a lone caller called just before: it reads its reply itself
+            boolean borrowed = wait.borrow(l);
+            l.send(frameOf(Wire.CALL, 99));
+            wait.await(l, borrowed, callBack, System.nanoTime());
+            served.complete(borrowed);
+          } catch (Exception e) {
+            served.completeExceptionally(e);
+          }
+        });
+      }
+
+      @Override
+      public void closed(Link l, String why) {}
+    }, watch);
+    sendFromFar(Wire.CALL);
+    byte[] calledBack = far[0].getInputStream().readNBytes(frameOf(Wire.CALL, 99).length);
+    assertEquals(Wire.CALL, calledBack[5], "the call back reached the peer");
+    sendFromFar(Wire.REPLY);
+    assertTrue(served.get(WAIT.toMillis(), TimeUnit.MILLISECONDS), "the call back borrowed");
+    assertEquals(List.of(Wire.CALL, Wire.REPLY), List.of(handedOut.take(), handedOut.take()));
+    sendFromFar(Wire.PING); // the peer's next frame, once it has its reply
+    assertEquals(Wire.PING, handedOut.poll(WAIT.toMillis(), TimeUnit.MILLISECONDS),
+        "the peer's next frame waits for a linger that never ends");
+    assertFalse(link.role.isLent());
+  }
+
+  /**
    * A lone caller whose reply comes later than its read wait parks, still counted as reading its
    * replies: the link's thread must take reading back at once and read the reply for it, not
    * wait for it to stop borrowing.

@@ -55,6 +55,21 @@ class ReadRoleTest {
     assertTrue(role.callerWaits(), "the first caller is still counted");
   }
 
+  /**
+   * A caller that called back the peer whose call it serves ends the linger: the link's thread
+   * reads again at once and lends no more, on a clock that stands still.
+   */
+  @Test
+  void aCallBackToThePeerEndsTheLingerAtOnce() throws Exception {
+    ReadRole still = new ReadRole(ReadRole.MIN_LINGER_NANOS, ReadRole.LINGER_NANOS, () -> 0L);
+    still.borrow();
+    CompletableFuture<Boolean> back = CompletableFuture.supplyAsync(still::lend);
+    Await.until(WAIT, still::isLent, "the link's thread to lend reading");
+    still.giveBackCallingBack();
+    assertTrue(back.get(WAIT.toMillis(), TimeUnit.MILLISECONDS), "the link's thread reads again");
+    assertFalse(still.shouldLend(), "lends again within a linger that never ends");
+  }
+
   @Test
   void aCallerThatWaitsWithoutReadingHasTheLinksThreadReadAtOnceAndLendNoMoreMeanwhile()
       throws Exception {
