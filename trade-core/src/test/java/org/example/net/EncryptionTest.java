@@ -27,14 +27,22 @@ class EncryptionTest {
     }
   }
 
+  /**
+   * Failure detection is not under test here: a long FAILURETIMEOUT keeps a machine too busy to
+   * move 1 MiB frames for a few seconds from closing the link mid-test.
+   */
+  private static final String FAILURE_TIMEOUT = "60000";
+
   private static TRADEContainer hub(boolean encrypt) {
-    return Hubs.hubBuilder("hub").property("USEENCRYPTION", Boolean.toString(encrypt)).build();
+    return Hubs.hubBuilder("hub").property("USEENCRYPTION", Boolean.toString(encrypt))
+        .property("FAILURETIMEOUT", FAILURE_TIMEOUT).build();
   }
 
   @Test
   void encryptedContainersCallEachOther() throws TRADEException {
     try (TRADEContainer hub = hub(true);
         TRADEContainer spoke = TRADEContainer.builder().name("spoke").property("USEENCRYPTION", "true")
+            .property("FAILURETIMEOUT", FAILURE_TIMEOUT)
             .property("CONNECTCONTAINERS", hub.getServerAddresses().get(0)).build()) {
       spoke.registerAllServices(new Echo());
       TRADEServiceConstraints c = new TRADEServiceConstraints().name("echo");
