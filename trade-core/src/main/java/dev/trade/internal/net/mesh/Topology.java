@@ -275,8 +275,8 @@ public final class Topology {
     long now = nanoTime();
     holdDown.values().removeIf(h -> now - h[1] >= 0);
     int n = graph.size();
-    if (distance.length < n) {
-      distance = new int[2 * n];
+    if (distance.length < n || (distance.length > 64 && distance.length > 4 * n)) {
+      distance = new int[2 * n]; // also smaller again once the graph was renumbered smaller
       firstHop = new int[2 * n];
     }
     int from = graph.node(self);
