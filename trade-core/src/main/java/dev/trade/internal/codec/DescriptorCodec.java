@@ -129,7 +129,10 @@ final class DescriptorCodec {
     return annotations;
   }
 
-  /** One length-prefixed annotation, or null if its class is unknown or refused here. */
+  /**
+   * One length-prefixed annotation, or null if its class (or one in its members) is unknown or
+   * refused here; a skipped entry must still be well-formed ({@link AnnotationShape}).
+   */
   private static Annotation readAnnotationEntry(Decoder d) throws TRADESerializationException {
     ByteSource in = d.in;
     int length = in.readInt();
@@ -138,23 +141,23 @@ final class DescriptorCodec {
           "annotation entry length " + length + " at offset " + in.at(-4) + ", "
               + in.remaining() + " bytes left");
     }
-    int end = in.pos + length;
+    int start = in.pos;
+    int end = start + length;
     int savedLimit = in.limit;
     int savedDepth = d.depth();
     long savedPending = d.suspendPending();
     in.limit = end;
     try {
-      int tag = in.buf[in.pos] & 0xFF;
-      if (tag != Tags.ANNOTATION) {
-        throw new MalformedValueException(
-            String.format("annotation entry holds tag 0x%02X at offset %d", tag, in.at(0)));
-      }
-      Object annotation = d.readValue();
+      // Every entry is checked whole first, so that one is well-formed whether it is decoded
+      // here or skipped (where a failed read stops at the class it could not take).
+      AnnotationShape.check(d);
       if (in.pos != end) {
         throw new MalformedValueException(
             "annotation entry has " + (end - in.pos) + " bytes after its value");
       }
-      return (Annotation) annotation;
+      in.pos = start;
+      d.resetDepth(savedDepth);
+      return (Annotation) d.readValue();
     } catch (MalformedValueException e) {
       throw e;
     } catch (TRADESerializationException e) {

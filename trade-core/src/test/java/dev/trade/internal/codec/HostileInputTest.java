@@ -16,6 +16,7 @@ import dev.trade.internal.codec.TestTypes.Point;
 import dev.trade.internal.codec.TestTypes.Pose;
 import java.math.BigDecimal;
 import java.nio.ByteBuffer;
+import java.nio.charset.StandardCharsets;
 import java.time.Instant;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
@@ -393,6 +394,63 @@ class HostileInputTest {
       ByteBuffer.wrap(changed, at, 4).putInt(bad);
       assertMalformed(codec, changed);
     }
+  }
+
+  /**
+   * An annotation entry is well-formed or refused, whether its type is known here and it is
+   * decoded or not and it is skipped: its members are read as far as their grammar goes, without
+   * loading a class.
+   */
+  @Test
+  void anAnnotationEntryDecodedOrSkippedMustBeWellFormed() throws Exception {
+    TestTypes.Action action = ServiceInfoCodingTest.Annotated.class
+        .getMethod("moveTo", double.class, double.class).getAnnotation(TestTypes.Action.class);
+    byte[] known = codec.encode(new FakeInfo(TestTypes.descriptor(action)));
+    int entry = indexOf(known, codec.encode(action), 0);
+    byte[] unknown = known.clone();
+    byte[] name = TestTypes.Action.class.getName().getBytes(StandardCharsets.UTF_8);
+    unknown[indexOf(unknown, name, entry) + name.length - 1] = 'X'; // a type this JVM does not have
+    assertEquals(List.of(action), ((FakeInfo) codec.decode(known, loader())).descriptor.annotations());
+    assertEquals(List.of(), ((FakeInfo) codec.decode(unknown, loader())).descriptor.annotations());
+
+    for (byte[] bytes : List.of(known, unknown)) {
+      List<byte[]> broken = new ArrayList<>();
+      byte[] shorter = bytes.clone(); // the value's last byte outside the entry
+      ByteBuffer.wrap(shorter).putInt(entry - 4, ByteBuffer.wrap(bytes).getInt(entry - 4) - 1);
+      broken.add(shorter);
+      int priorityTag = indexOf(bytes, ascii("priority"), entry) + "priority".length();
+      assertEquals(Tags.INT32, bytes[priorityTag]);
+      for (int tag : new int[] {0x7F, Tags.LIST, Tags.NULL, Tags.JAVA}) { // unknown, or not a member's
+        broken.add(changed(bytes, priorityTag, tag));
+      }
+      broken.add(changed(bytes, indexOf(bytes, ascii("move"), entry), 0xFF)); // not UTF-8
+      byte[] className = ascii("[Ljava.lang.String;");
+      broken.add(changed(bytes, indexOf(bytes, className, entry) + className.length - 1, '!'));
+      byte[] inner = TestTypes.Inner.class.getName().getBytes(StandardCharsets.UTF_8);
+      broken.add(changed(bytes, indexOf(bytes, inner, entry) + inner.length, 0x7F)); // 127 members
+      for (byte[] b : broken) {
+        assertMalformed(codec, b);
+      }
+    }
+  }
+
+  private static byte[] ascii(String s) {
+    return s.getBytes(StandardCharsets.US_ASCII);
+  }
+
+  private static byte[] changed(byte[] bytes, int at, int value) {
+    byte[] c = bytes.clone();
+    c[at] = (byte) value;
+    return c;
+  }
+
+  private static int indexOf(byte[] haystack, byte[] needle, int from) {
+    for (int i = from; i + needle.length <= haystack.length; i++) {
+      if (Arrays.equals(haystack, i, i + needle.length, needle, 0, needle.length)) {
+        return i;
+      }
+    }
+    throw new AssertionError("not found: " + HexFormat.of().formatHex(needle));
   }
 
   private static byte[] concat(byte[] a, byte[] b) {

@@ -17,7 +17,8 @@ import java.util.function.IntPredicate;
  * <p>Each node keeps the neighbours its state lists, sorted by id (the order every container walks
  * them in, so that all choose the same shortest paths), and as a bit set for "does it list me
  * back". Numbers are given out as ids are first seen and renumbered when most belong to states
- * that were removed. Not thread-safe: the control thread owns it.
+ * that were removed, or to ids that no state lists any more. Not thread-safe: the control thread
+ * owns it.
  */
 final class Graph {
   private final Map<String, Integer> index = new HashMap<>();
@@ -25,6 +26,8 @@ final class Graph {
   private int[][] listed = new int[16][];
   private BitSet[] listedSet = new BitSet[16];
   private int states;
+  /** How many neighbours the states list together: with {@link #states}, a bound on live ids. */
+  private long edges;
   private int generation;
 
   /** This node's number, given out now if the id is new. */
@@ -65,11 +68,20 @@ final class Graph {
     int o = node(owner);
     if (listed[o] == null) {
       states++;
+    } else {
+      edges -= listed[o].length;
     }
     set(o, sorted);
+    // Ids that no state lists any more (a neighbour that left before its own state came) are
+    // numbered until a renumbering, which forgetting a state alone did not bring about: with links
+    // coming and going and no state forgotten, the numbers grew for good.
+    if (names.size() > 64 && names.size() > 4 * (states + edges)) {
+      renumber();
+    }
   }
 
   private void set(int o, String[] sorted) {
+    edges += sorted.length;
     int[] nodes = new int[sorted.length];
     BitSet set = new BitSet();
     for (int i = 0; i < sorted.length; i++) {
@@ -86,6 +98,7 @@ final class Graph {
     if (o < 0 || listed[o] == null) {
       return;
     }
+    edges -= listed[o].length;
     listed[o] = null;
     listedSet[o] = null;
     states--;
@@ -113,8 +126,10 @@ final class Graph {
     }
     index.clear();
     names.clear();
-    Arrays.fill(listed, null);
-    Arrays.fill(listedSet, null);
+    edges = 0;
+    int capacity = Math.max(16, 2 * kept.size());
+    listed = new int[capacity][]; // as small as the states kept need: they grow when needed
+    listedSet = new BitSet[capacity];
     for (Map.Entry<String, String[]> e : kept.entrySet()) {
       set(node(e.getKey()), e.getValue());
     }

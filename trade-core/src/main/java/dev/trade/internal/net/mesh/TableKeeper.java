@@ -136,6 +136,20 @@ final class TableKeeper {
     }
   }
 
+  /**
+   * When {@link #prune} will next forget a table (nanoTime), or {@code Long.MAX_VALUE} when none
+   * waits.
+   */
+  long forgetsAt() {
+    long first = Long.MAX_VALUE;
+    for (Waiting w : waiting.values()) {
+      if (first == Long.MAX_VALUE || w.since() - first < 0) {
+        first = w.since();
+      }
+    }
+    return first == Long.MAX_VALUE ? first : first + graceNanos + 1;
+  }
+
   /** Forgets tables that waited longer than the grace period. */
   void prune(long nowNanos) {
     waiting.values().removeIf(w -> nowNanos - w.since() > graceNanos);

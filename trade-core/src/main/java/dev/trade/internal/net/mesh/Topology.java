@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.LongSupplier;
 
 /**
  * Link-state routing: every container floods the list of containers it has a direct link to
@@ -56,6 +57,8 @@ public final class Topology {
   /** Containers that just became unreachable: their state version then, and until when it holds. */
   private final Map<String, long[]> holdDown = new HashMap<>();
   private final long holdDownNanos;
+  /** nanoTime, for hold-downs here and for {@link Routing}'s decisions. */
+  private final LongSupplier clock;
   private long ownVersion;
   private Map<String, Route> routes = Map.of();
   /** States changed since routes were computed: they are computed again when next read. */
@@ -67,9 +70,19 @@ public final class Topology {
    *     and a late neighbour's stale state must not bring a dead container back
    */
   Topology(String self, long holdDownNanos) {
+    this(self, holdDownNanos, System::nanoTime);
+  }
+
+  /** @param clock nanoTime: the JVM's, or a test's */
+  Topology(String self, long holdDownNanos, LongSupplier clock) {
     this.self = self;
     this.holdDownNanos = holdDownNanos;
+    this.clock = clock;
     put(new LinkState(self, 0, Set.of()));
+  }
+
+  long nanoTime() {
+    return clock.getAsLong();
   }
 
   /** Sets this container's own neighbours; returns the new own state to flood. */
@@ -197,18 +210,20 @@ public final class Topology {
   }
 
   /**
-   * Forgets the states of containers that have been unreachable for longer than {@code graceNanos}
-   * (they left or died; a restarted container has a new id). States of unreachable containers are
-   * kept for a while because a state may arrive before the states that connect its owner to us.
+   * Forgets the states of containers that have been unreachable for longer than {@code graceNanos},
+   * and that they were lost (they left or died; a restarted container has a new id). States of
+   * unreachable containers are kept for a while because a state may arrive before the states that
+   * connect its owner to us.
    */
   void pruneUnreachable(long nowNanos, long graceNanos) {
     fresh();
     for (String owner : states.keySet()) {
-      if (owner.equals(self) || routes.containsKey(owner)) {
-        unreachableSince.remove(owner);
-      } else {
-        unreachableSince.putIfAbsent(owner, nowNanos);
-      }
+      noteReachability(owner, nowNanos);
+    }
+    // A neighbour that left before its own state came is lost without a state: this is all that
+    // is kept of it, and it was kept for good (a set of every such id ever seen).
+    for (String owner : lost) {
+      noteReachability(owner, nowNanos);
     }
     unreachableSince.entrySet().removeIf(e -> {
       if (nowNanos - e.getValue() > graceNanos) {
@@ -218,14 +233,36 @@ public final class Topology {
         graph.remove(e.getKey());
         return true;
       }
-      return !states.containsKey(e.getKey());
+      return !states.containsKey(e.getKey()) && !lost.contains(e.getKey());
     });
+  }
+
+  private void noteReachability(String owner, long nowNanos) {
+    if (owner.equals(self) || routes.containsKey(owner)) {
+      unreachableSince.remove(owner);
+    } else {
+      unreachableSince.putIfAbsent(owner, nowNanos);
+    }
+  }
+
+  /**
+   * When {@link #pruneUnreachable} with {@code graceNanos} will next forget a state (nanoTime), or
+   * {@code Long.MAX_VALUE} when no state waits for it.
+   */
+  long forgetsAt(long graceNanos) {
+    long first = Long.MAX_VALUE;
+    for (long since : unreachableSince.values()) {
+      if (first == Long.MAX_VALUE || since - first < 0) {
+        first = since;
+      }
+    }
+    return first == Long.MAX_VALUE ? first : first + graceNanos + 1;
   }
 
   /** Whether {@code container} is held unreachable now (see the constructor). */
   boolean isHeldDown(String container) {
     fresh();
-    return heldDown(container, System.nanoTime());
+    return heldDown(container, nanoTime());
   }
 
   /** Recomputes routes now (a hold-down may have ended). */
@@ -235,11 +272,11 @@ public final class Topology {
 
   private void recompute() {
     stale = false;
-    long now = System.nanoTime();
+    long now = nanoTime();
     holdDown.values().removeIf(h -> now - h[1] >= 0);
     int n = graph.size();
-    if (distance.length < n) {
-      distance = new int[2 * n];
+    if (distance.length < n || (distance.length > 64 && distance.length > 4 * n)) {
+      distance = new int[2 * n]; // also smaller again once the graph was renumbered smaller
       firstHop = new int[2 * n];
     }
     int from = graph.node(self);

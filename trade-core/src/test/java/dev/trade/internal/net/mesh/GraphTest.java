@@ -55,4 +55,16 @@ class GraphTest {
     assertTrue(g.size() < 64, "numbers kept: " + g.size());
     assertEquals(1, distances(g, "a")[g.find("b")]);
   }
+
+  @Test
+  void idsNoStateListsAnyMoreAreRenumberedAwayThoughNoStateIsForgotten() {
+    Graph g = new Graph();
+    g.put("b", Set.of("a"));
+    for (int i = 0; i < 10_000; i++) { // neighbours that link and leave before their own state comes
+      g.put("a", Set.of("b", "peer" + i));
+    }
+    assertTrue(g.size() <= 64, "numbers kept: " + g.size());
+    assertEquals(1, distances(g, "a")[g.find("b")]);
+    assertEquals(1, distances(g, "a")[g.find("peer9999")]);
+  }
 }
