@@ -14,6 +14,7 @@ import dev.trade.TRADERegistrationException;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
+import dev.trade.TRADEServiceUnavailableException;
 import dev.trade.TRADETimeoutException;
 import dev.trade.testing.Await;
 import java.time.Duration;
@@ -279,6 +280,27 @@ class ServiceNotificationsTest {
     ExecutionException bad = assertThrows(ExecutionException.class,
         () -> add.callAsync(int.class, 1).get(WAIT.toSeconds(), TimeUnit.SECONDS));
     assertInstanceOf(TRADEBadArgumentsException.class, bad.getCause());
+  }
+
+  @Test
+  void callAsyncOnAClosedContainerFailsAtOnceAndStartsNoThread() throws Exception {
+    TRADEContainer hub = hub();
+    TRADEContainer b = spoke("b", hub);
+    b.registerAllServices(new Battery());
+    hub.registerAllServices(new Dock());
+    TRADEServiceInfo add = await(hub, "add", "b");
+    TRADEServiceInfo dock = only(hub, "dock", "hub");
+    hub.close();
+    for (CompletableFuture<?> f : List.of(add.callAsync(Integer.class, 1, 2), dock.callAsync(void.class))) {
+      ExecutionException e = assertThrows(ExecutionException.class, () -> f.get(WAIT.toSeconds(),
+          TimeUnit.SECONDS));
+      // As call() would throw: the service is not reachable from a closed container.
+      assertInstanceOf(TRADEServiceUnavailableException.class, e.getCause());
+      assertTrue(e.getCause().getMessage().contains("container hub is closed"),
+          e.getCause().getMessage());
+    }
+    assertTrue(Thread.getAllStackTraces().keySet().stream()
+        .noneMatch(t -> t.getName().startsWith("trade-async-hub-")), "no pool made after close");
   }
 
   @Test

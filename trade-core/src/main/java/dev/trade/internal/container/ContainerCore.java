@@ -55,6 +55,7 @@ import java.util.UUID;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionException;
 import java.util.concurrent.ExecutorService;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.Executors;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -488,10 +489,16 @@ public final class ContainerCore implements ServiceCaller {
       return remote.callAsync(d, returnType, normalized, context, timeout, asyncPool());
     } catch (TRADEException e) {
       return CompletableFuture.failedFuture(e);
+    } catch (RejectedExecutionException e) {
+      return CompletableFuture.failedFuture(CallErrors.gone(d, "container " + name + " is closed"));
     }
   }
 
+  /** The pool of asynchronous calls, made at the first; refuses once the container is closed. */
   private synchronized ExecutorService asyncPool() {
+    if (closed) {
+      throw new RejectedExecutionException("container " + name + " is closed");
+    }
     if (asyncPool == null) {
       AtomicInteger n = new AtomicInteger();
       asyncPool = Executors.newCachedThreadPool(r -> {
