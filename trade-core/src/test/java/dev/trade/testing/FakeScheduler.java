@@ -42,6 +42,7 @@ public final class FakeScheduler implements Scheduler {
   private long now = 1_000_000_000L; // Guarded by this.
   private long seq; // Guarded by this.
   private boolean closed; // Guarded by this.
+  private int sleepers; // Guarded by this.
 
   @Override
   public synchronized long nanoTime() {
@@ -62,6 +63,28 @@ public final class FakeScheduler implements Scheduler {
   public synchronized void close() {
     closed = true;
     tasks.clear();
+    notifyAll();
+  }
+
+  /**
+   * Waits, in the calling thread (never the one that calls {@link #advance}, or it waits for
+   * ever), until {@link #advance} moves the clock to {@code atNanos}, or the scheduler is closed.
+   */
+  @Override
+  public synchronized void sleepUntil(long atNanos) throws InterruptedException {
+    sleepers++;
+    try {
+      while (now - atNanos < 0 && !closed) {
+        wait();
+      }
+    } finally {
+      sleepers--;
+    }
+  }
+
+  /** How many threads wait in {@link #sleepUntil} for the clock to move. */
+  public synchronized int sleepers() {
+    return sleepers;
   }
 
   /** How many tasks wait (cancelled ones are gone at once). */
@@ -88,11 +111,13 @@ public final class FakeScheduler implements Scheduler {
             .orElse(null);
         if (next == null) {
           now = until;
+          notifyAll();
           return;
         }
         tasks.remove(next);
         if (next.at - now > 0) {
           now = next.at;
+          notifyAll();
         }
       }
       next.run();

@@ -167,8 +167,9 @@ public final class ContainerCore implements ServiceCaller {
           }
         }, constraints, name);
     try {
-      registerSystem(new NotificationService(notifications, notificationClient, infos));
-      locks.registered(registerSystem(locks.service()));
+      locks.bindCaller(registerSystem(new NotificationService(notifications, notificationClient,
+          infos)));
+      locks.bindCaller(registerSystem(locks.service()));
       registerSystem(new AdminService(new Administered(), access, settings.providerClasses(),
           System.currentTimeMillis()));
       for (Object service : hooks.services()) {

@@ -5,6 +5,7 @@ import dev.trade.TRADEException;
 import dev.trade.internal.call.CallContext;
 import dev.trade.internal.call.CallErrors;
 import dev.trade.internal.call.CallLink;
+import dev.trade.internal.call.CurrentCall;
 import dev.trade.internal.call.Invocation;
 import java.util.UUID;
 import java.util.function.LongSupplier;
@@ -14,19 +15,20 @@ import java.util.function.LongSupplier;
  * (its id and fencing token in the call's context, from the lock's owner); any other call is
  * refused at once with {@code TRADELockedException}, or waits within its deadline when it asked to
  * ({@link Locks#WAIT}). A call under a lock that does not hold the service is refused too. Calls to
- * the lock service run with their invocation bound ({@link #current()}), so that it knows who asks.
+ * the system services that must know who asks (the lock service, the notification service) run
+ * with their invocation bound ({@link CurrentCall}): this link already looks at every call's
+ * service, so the binding costs other calls nothing more.
  * Thread-safe: all state is in the {@link LeaseTable}.
  */
 final class LockLink implements CallLink {
-  private static final ThreadLocal<Invocation> CURRENT = new ThreadLocal<>();
   /** The most a waiting call keeps for its refusal to travel back: see {@link #waitDeadline}. */
   static final long MARGIN = 500_000_000L;
 
   private final LeaseTable table;
   private final LongSupplier clock;
   private final Holders holders;
-  /** Service ids of this container's lock service, set once it is registered. */
-  private volatile long[] lockServiceIds = new long[0];
+  /** Service ids whose calls run with their invocation bound, added once they are registered. */
+  private volatile long[] boundIds = new long[0];
 
   LockLink(LeaseTable table, LongSupplier clock, Holders holders) {
     this.table = table;
@@ -34,13 +36,10 @@ final class LockLink implements CallLink {
     this.holders = holders;
   }
 
-  void lockService(long[] ids) {
-    lockServiceIds = ids.clone();
-  }
-
-  /** The call to the lock service this thread is running, or null. */
-  static Invocation current() {
-    return CURRENT.get();
+  synchronized void bindCaller(long[] ids) {
+    long[] all = java.util.Arrays.copyOf(boundIds, boundIds.length + ids.length);
+    System.arraycopy(ids, 0, all, boundIds.length, ids.length);
+    boundIds = all;
   }
 
   @Override
@@ -54,7 +53,7 @@ final class LockLink implements CallLink {
           + call.service().signature());
     }
     if (lockText == null && table.unused()) {
-      return isLockService(service) ? bound(call, next) : next.proceed(call);
+      return isBound(service) ? CurrentCall.bound(call, next) : next.proceed(call);
     }
     UUID lock = lockText == null ? null : parseLock(call, lockText);
     long token = lockText == null ? 0 : parseToken(call, context.get(Locks.TOKEN));
@@ -75,7 +74,7 @@ final class LockLink implements CallLink {
           : "; " + holders.describe(a.blocker())) + (a.mayWait() ? "; wait for it with"
           + " TRADEServiceInfo.waitingForLock(), or call under that lock" : ""));
     }
-    return isLockService(service) ? bound(call, next) : next.proceed(call);
+    return isBound(service) ? CurrentCall.bound(call, next) : next.proceed(call);
   }
 
   /**
@@ -87,22 +86,8 @@ final class LockLink implements CallLink {
     return left <= 0 ? deadline : deadline - Math.min(left / 4, MARGIN);
   }
 
-  private static Object bound(Invocation call, Next next) throws TRADEException {
-    Invocation outer = CURRENT.get();
-    CURRENT.set(call);
-    try {
-      return next.proceed(call);
-    } finally {
-      if (outer == null) {
-        CURRENT.remove();
-      } else {
-        CURRENT.set(outer);
-      }
-    }
-  }
-
-  private boolean isLockService(long service) {
-    for (long id : lockServiceIds) {
+  private boolean isBound(long service) {
+    for (long id : boundIds) {
       if (id == service) {
         return true;
       }

@@ -6,6 +6,7 @@ import dev.trade.TRADEException;
 import dev.trade.TRADENotAuthorizedException;
 import dev.trade.TRADEService;
 import dev.trade.internal.call.CallErrors;
+import dev.trade.internal.call.CurrentCall;
 import dev.trade.internal.call.Invocation;
 import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.registry.LocalService;
@@ -98,7 +99,7 @@ public final class LockService {
             + " locked");
       }
     }
-    Invocation call = LockLink.current();
+    Invocation call = CurrentCall.get();
     LeaseTable.Claim claim = new LeaseTable.Claim(lock,
         call == null ? self : call.caller().container(), call == null ? "" : call.caller().principal());
     long now = clock.getAsLong();
@@ -207,7 +208,7 @@ public final class LockService {
   }
 
   private UUID owner() {
-    Invocation call = LockLink.current();
+    Invocation call = CurrentCall.get();
     return call == null ? self : call.caller().container();
   }
 

@@ -106,13 +106,17 @@ public final class Locks {
     return service;
   }
 
-  /** Tells the link which services are the lock service's own, once registered. */
-  public void registered(List<LocalService> services) {
+  /**
+   * Makes calls to {@code services} (this container's system services that must know who asks:
+   * the lock service's own, the notification service's) run with their invocation bound
+   * ({@link dev.trade.internal.call.CurrentCall}), once they are registered.
+   */
+  public void bindCaller(List<LocalService> services) {
     long[] ids = new long[services.size()];
     for (int i = 0; i < ids.length; i++) {
       ids[i] = services.get(i).descriptor().serviceId();
     }
-    link.lockService(ids);
+    link.bindCaller(ids);
   }
 
   /** The requester's side, behind the static API. */

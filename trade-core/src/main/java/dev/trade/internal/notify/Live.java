@@ -13,9 +13,23 @@ import java.util.Map;
  * clock. Safe for concurrent use (state guarded by this).
  */
 final class Live {
-  /** What to do at a due time: deliver or not, and when it is due next ({@code -1}: never). */
-  record Step(boolean deliver, long nextNanos) {
-    static final Step NOTHING = new Step(false, -1);
+  /**
+   * The most a timed delivery is handed to its delivery thread before it is due, which then waits
+   * for its time: a delivery costs that thread's one wake-up at its time, not the timer's and then
+   * that thread's. At most half a period, so a delivery is handed over after the one before is due.
+   */
+  static final long MAX_LEAD_NANOS = 1_000_000;
+
+  /**
+   * What the timer does when it wakes for a notification.
+   *
+   * @param deliver whether to hand a delivery over
+   * @param dueNanos the due time of that delivery, which waits for it
+   * @param nextNanos when it is due next ({@code -1}: never)
+   * @param wakeNanos when the timer wakes for it next ({@code -1}: never)
+   */
+  record Step(boolean deliver, long dueNanos, long nextNanos, long wakeNanos) {
+    static final Step NOTHING = new Step(false, -1, -1, -1);
   }
 
   final String id;
@@ -36,20 +50,37 @@ final class Live {
     this.nextDue = spec.timing() == null ? -1 : spec.timing().firstNanos();
   }
 
+  /** How long before a due time the timer hands the delivery over. */
+  long leadNanos() {
+    long period = spec.timing() == null ? 0 : spec.timing().periodNanos();
+    return period == 0 ? MAX_LEAD_NANOS : Math.min(period / 2, MAX_LEAD_NANOS);
+  }
+
+  /** When the timer first wakes for it: its lead before the first due time. */
+  synchronized long firstWake() {
+    return nextDue - leadNanos();
+  }
+
   /** The first due time ({@code -1} for joined and left, which follow the registry instead). */
   synchronized long firstDue() {
     return nextDue;
   }
 
   /**
-   * The notification is due at {@code now}: deliver unless a delivery still runs (then this one
-   * is skipped and counted, never overlapped); a repeating one is due next a period after this
-   * due time (fixed rate), and due times the timer missed altogether (it ran more than a period
-   * late) are skipped and counted too.
+   * The timer woke for the next due time at {@code now}, up to {@link #leadNanos} before it: hand a
+   * delivery over unless one still runs (then this one is skipped and counted, never overlapped;
+   * when that is seen before the due time, the timer decides again at the due time, as the one
+   * running may end by then). A repeating one is due next a period after this due time (fixed
+   * rate), and due times the timer missed altogether (it ran more than a period late) are skipped
+   * and counted too.
    */
   synchronized Step due(long now) {
     if (endReason != null) {
       return Step.NOTHING;
+    }
+    long dueNow = nextDue;
+    if (running && now - dueNow < 0) {
+      return new Step(false, dueNow, dueNow, dueNow);
     }
     boolean deliver = !running;
     if (deliver) {
@@ -60,7 +91,7 @@ final class Live {
     long period = spec.timing().periodNanos();
     if (period == 0) {
       nextDue = -1;
-      return new Step(deliver, -1);
+      return new Step(deliver, dueNow, -1, -1);
     }
     nextDue += period;
     if (nextDue - now <= 0) {
@@ -68,7 +99,7 @@ final class Live {
       nextDue += missed * period;
       skipped += missed;
     }
-    return new Step(deliver, nextDue);
+    return new Step(deliver, dueNow, nextDue, nextDue - leadNanos());
   }
 
   /** A delivery for a joined or left event starts; false once ended. */

@@ -2,8 +2,11 @@ package dev.trade.internal.notify;
 
 import dev.trade.TRADEAccess;
 import dev.trade.TRADEException;
+import dev.trade.TRADENotAuthorizedException;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceInfo;
+import dev.trade.internal.call.CurrentCall;
+import dev.trade.internal.call.Invocation;
 import dev.trade.internal.codec.InfoBinding;
 import dev.trade.internal.registry.ServiceDescriptor;
 import java.util.ArrayList;
@@ -19,7 +22,9 @@ import java.util.Objects;
  * docs/notifications.md so that other implementations can provide and call them.
  *
  * <p>Open to every caller ({@link TRADEAccess#ANYONE}), although it is in the reserved group: every
- * container requests notifications of others on its users' behalf, without credentials.
+ * container requests notifications of others on its users' behalf, without credentials. Only
+ * {@link #notificationEnded} asks who calls (the host chain binds its call, {@link CurrentCall}):
+ * only the container that ran a notification may say that it ended.
  *
  * <p>Public only because services must be; the module does not export it. Safe for concurrent use.
  */
@@ -90,10 +95,23 @@ public final class NotificationService {
    *
    * @param id the notification's id
    * @param reason why it ended (for the log; as {@code endReason} in the list of ended ones)
+   * @throws TRADENotAuthorizedException the caller is not the container that ran it (whose id, and
+   *     ':', {@code id} starts with); nothing is forgotten
    */
   @TRADEService
   public void notificationEnded(String id, String reason) throws TRADEException {
-    client.ended(Objects.requireNonNull(id, "id == null"));
+    Objects.requireNonNull(id, "id == null");
+    Invocation call = CurrentCall.get();
+    String caller = call == null ? null : call.caller().container().toString();
+    if (caller == null || !id.startsWith(caller + ":")) {
+      int colon = id.indexOf(':');
+      throw new TRADENotAuthorizedException("notificationEnded(" + id + "): only the container that"
+          + " ran the notification may say it ended, container "
+          + (colon < 0 ? "(none: the id has no '<container id>:')" : id.substring(0, colon))
+          + "; the caller is " + (caller == null ? "not known (not called through the host chain)"
+          : "container " + caller) + "; nothing was forgotten");
+    }
+    client.ended(id);
   }
 
   /** The live notifications of this container: one map each, keys as in docs/notifications.md. */

@@ -163,7 +163,7 @@ public final class Notifications implements Registry.Listener {
     }
     if (l.spec.timing() != null) {
       try {
-        schedule(l, l.firstDue());
+        schedule(l, l.firstWake());
       } catch (RejectedExecutionException closing) {
         live.remove(l.id);
         throw new IllegalStateException("notifications of " + registry.containerId() + " are closed");
@@ -278,18 +278,47 @@ public final class Notifications implements Registry.Listener {
     l.timer(scheduler.schedule(() -> due(l), at));
   }
 
-  /** The timer's task: decides, schedules the next, hands the delivery to the pool. */
+  /**
+   * The timer's task, a lead before a due time: decides, schedules its next wake-up, hands the
+   * delivery to the pool, where it waits for its due time. The timer never waits for a delivery.
+   */
   private void due(Live l) {
     Live.Step step = l.due(scheduler.nanoTime());
-    if (step.nextNanos() >= 0) {
+    if (step.wakeNanos() >= 0) {
       try {
-        schedule(l, step.nextNanos());
+        schedule(l, step.wakeNanos());
       } catch (RejectedExecutionException closing) {
         return;
       }
     }
     if (step.deliver()) {
-      runOn(deliveries, () -> deliver(l));
+      runOn(deliveries, new Delivery(l, step.dueNanos()));
+    }
+  }
+
+  /** A timed delivery handed to the pool before its due time, which it waits for first. */
+  final class Delivery implements Runnable {
+    final Live live;
+    final long dueNanos;
+
+    Delivery(Live live, long dueNanos) {
+      this.live = live;
+      this.dueNanos = dueNanos;
+    }
+
+    @Override
+    public void run() {
+      try {
+        scheduler.sleepUntil(dueNanos);
+      } catch (InterruptedException closing) {
+        finished(live, false, null);
+        return;
+      }
+      if (live.ended()) {
+        finished(live, false, null); // cancelled while it waited
+        return;
+      }
+      deliver(live);
     }
   }
 

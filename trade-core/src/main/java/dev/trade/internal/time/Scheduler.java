@@ -6,6 +6,7 @@ import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.LockSupport;
 
 /**
  * One container's clock and timer (see the package comment). Implementations are safe for
@@ -34,6 +35,22 @@ public interface Scheduler {
   default Runnable schedule(Runnable task, long atNanos) {
     ScheduledFuture<?> f = timer().schedule(task, atNanos - nanoTime(), TimeUnit.NANOSECONDS);
     return () -> f.cancel(false);
+  }
+
+  /**
+   * Parks the calling thread until this clock reaches {@code atNanos} ({@link #nanoTime} scale);
+   * returns at once if it has. For a task handed to another thread a little before its time, so
+   * that it starts at its time with one wake-up rather than the timer's and then its thread's.
+   *
+   * @throws InterruptedException the thread was interrupted while it waited
+   */
+  default void sleepUntil(long atNanos) throws InterruptedException {
+    for (long left = atNanos - nanoTime(); left > 0; left = atNanos - nanoTime()) {
+      LockSupport.parkNanos(this, left);
+      if (Thread.interrupted()) {
+        throw new InterruptedException();
+      }
+    }
   }
 
   /** Stops the timer; tasks not run yet never run, and new ones are rejected. Idempotent. */

@@ -19,6 +19,7 @@ import java.util.Collections;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.Executor;
 
 /**
  * One container's notification engine on a fake clock: a real registry, services called through
@@ -29,9 +30,20 @@ final class Fixture {
   final FakeScheduler clock = new FakeScheduler();
   final ManualExecutor deliveries = new ManualExecutor();
   final ManualExecutor events = new ManualExecutor();
-  final Notifications engine = new Notifications(registry, new Caller(), InfoBinding.DESCRIPTORS,
-      argument -> argument == null ? new Query(null, null, null, Set.of(), Set.of(), false, null,
-          null, Set.of(), List.of(), List.of()) : null, clock, deliveries, events, "one");
+  final Notifications engine;
+
+  /** Deliveries held until the test runs them. */
+  Fixture() {
+    this(null);
+  }
+
+  /** Deliveries on {@code pool} (real threads), or held until the test runs them (null). */
+  Fixture(Executor pool) {
+    engine = new Notifications(registry, new Caller(), InfoBinding.DESCRIPTORS,
+        argument -> argument == null ? new Query(null, null, null, Set.of(), Set.of(), false, null,
+            null, Set.of(), List.of(), List.of()) : null, clock, pool != null ? pool : deliveries,
+        events, "one");
+  }
 
   /** Registers {@code provider} and returns its service {@code name}. */
   ServiceDescriptor service(Object provider, String name) throws TRADEException {
@@ -47,10 +59,14 @@ final class Fixture {
     throw new AssertionError("no service " + name);
   }
 
-  /** Moves the clock, then runs every delivery it made due. */
+  /**
+   * Moves the clock, then runs every delivery it made due; a delivery handed over before its due
+   * time (which would wait for it) stays queued.
+   */
   void advanceAndDeliver(long millis) {
     clock.advanceMillis(millis);
-    deliveries.runAll();
+    deliveries.runAll(r -> !(r instanceof Notifications.Delivery)
+        || ((Notifications.Delivery) r).dueNanos - clock.nanoTime() <= 0);
     events.runAll();
   }
 

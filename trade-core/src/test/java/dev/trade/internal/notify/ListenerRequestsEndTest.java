@@ -1,9 +1,14 @@
 package dev.trade.internal.notify;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trade.TRADEContainer;
 import dev.trade.TRADEException;
+import dev.trade.TRADEInvocationException;
+import dev.trade.TRADENotAuthorizedException;
 import dev.trade.TRADEService;
 import dev.trade.TRADEServiceConstraints;
 import dev.trade.TRADEServiceInfo;
@@ -70,7 +75,11 @@ class ListenerRequestsEndTest {
   }
 
   private static TRADEServiceInfo service(TRADEContainer from, String name, String of) {
-    TRADEServiceConstraints c = new TRADEServiceConstraints().name(name);
+    return find(from, new TRADEServiceConstraints().name(name), of);
+  }
+
+  private static TRADEServiceInfo find(TRADEContainer from, TRADEServiceConstraints c, String of) {
+    String name = c.toString();
     Await.until(WAIT, () -> from.getAvailableServices(c).stream()
         .anyMatch(s -> s.getContainerName().equals(of)), name + " of " + of);
     return from.getAvailableServices(c).stream().filter(s -> s.getContainerName().equals(of))
@@ -150,5 +159,43 @@ class ListenerRequestsEndTest {
     assertEquals(2, client.remembered());
     c.deregister(counter);
     Await.until(WAIT, () -> client.remembered() == 0, "its requests forgotten");
+  }
+
+  /** The system service {@code name} of container {@code of}, as {@code from} finds it. */
+  private static TRADEServiceInfo system(TRADEContainer from, String name, String of) {
+    return find(from, new TRADEServiceConstraints().name(name).inGroups("trade.system"), of);
+  }
+
+  /**
+   * Only the container that ran a notification may tell its requester that it ended: a third
+   * container saying so of someone else's notification is refused, and the requester forgets
+   * nothing.
+   */
+  @Test
+  void aThirdContainerCannotEndSomeoneElsesRequest() throws Exception {
+    TRADEContainer hub = net.hub("hub");
+    TRADEContainer sensor = net.spoke("sensor", hub);
+    TRADEContainer intruder = net.spoke("intruder", hub);
+    NotificationClient client = streaming(hub, sensor, new Source());
+    @SuppressWarnings("unchecked")
+    List<java.util.Map<String, Object>> live = system(intruder, "listNotifications", "sensor")
+        .call(List.class);
+    String id = (String) live.get(0).get("id");
+    TRADEServiceInfo ended = system(intruder, "notificationEnded", "hub");
+    // What a service throws reaches its caller as the cause of a TRADEInvocationException.
+    Throwable e = assertThrows(TRADEInvocationException.class,
+        () -> ended.call(Object.class, id, "cancelled")).getCause();
+    assertInstanceOf(TRADENotAuthorizedException.class, e);
+    assertTrue(e.getMessage().contains("only the container that ran the notification"),
+        e.getMessage());
+    assertTrue(e.getMessage().contains(sensor.getId()), e.getMessage());
+    assertTrue(e.getMessage().contains(intruder.getId()), e.getMessage());
+    assertInstanceOf(TRADENotAuthorizedException.class, assertThrows(TRADEInvocationException.class,
+        () -> ended.call(Object.class, "no-colon", "x")).getCause());
+    assertEquals(1, client.remembered(), "nothing forgotten");
+    assertTrue(registered(hub, "value"), "the listener kept");
+    // The container that ran it still may.
+    assertTrue(hub.cancelNotification(id));
+    Await.until(WAIT, () -> client.remembered() == 0, "forgotten once its runner says it ended");
   }
 }

@@ -110,7 +110,9 @@ class TimedNotificationsTest {
     // The timer thread ran 35 ms late: one delivery, the three due times it slept through skipped.
     Live.Step step = l.due(first + 35_000_000L);
     assertTrue(step.deliver());
+    assertEquals(first, step.dueNanos(), "the delivery is the one due first");
     assertEquals(first + 40_000_000L, step.nextNanos(), "still on the fixed-rate grid");
+    assertEquals(first + 39_000_000L, step.wakeNanos(), "the timer wakes a lead before it");
     assertEquals(3, l.skipped());
   }
 
