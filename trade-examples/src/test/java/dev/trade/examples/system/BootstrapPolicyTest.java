@@ -51,12 +51,17 @@ class BootstrapPolicyTest {
 
     @TRADEService
     public Object checkFor(String object) throws TRADEException {
+      // The planner's call may come before its table does: wait for it, with a deadline.
       TRADEServiceInfo describe = null;
-      for (TRADEServiceInfo s : container.getAvailableServices(new TRADEServiceConstraints()
-          .inGroups("trade.system").name("describeContainer"))) {
-        if (s.getContainerName().equals("planner")) {
-          describe = s;
+      long deadline = System.nanoTime() + java.util.concurrent.TimeUnit.SECONDS.toNanos(30);
+      while (describe == null && System.nanoTime() - deadline < 0) {
+        for (TRADEServiceInfo s : container.getAvailableServices(new TRADEServiceConstraints()
+            .inGroups("trade.system").name("describeContainer"))) {
+          if (s.getContainerName().equals("planner")) {
+            describe = s;
+          }
         }
+        java.util.concurrent.locks.LockSupport.parkNanos(1_000_000);
       }
       if (describe == null) {
         throw new IllegalStateException("checkFor was called, but the planner is not known here");
